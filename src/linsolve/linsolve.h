@@ -1,0 +1,44 @@
+/*
+ * linsolve.h — linear solvers for the MPS pressure Poisson equation (PPE).
+ *
+ * The MPS library assembles the PPE matrix in CSR and calls this facade; the
+ * solver, its preconditioner and its tolerances come from a dictionary (the
+ * PPE sub-dictionary of system/mpsSolution) or from plain values.
+ *
+ *   solver          pcg | bicgstab | cholmod | hypre     (default pcg)
+ *   preconditioner  none | jacobi | ic0 | dic             (default jacobi)
+ *   tolerance       relative, on ||b - A x||_2 / ||b||_2  (default 1e-8)
+ *   maxIter         (default 1000)
+ *   warmStart       yes | no                              (default yes)
+ *
+ * See toolchain.md §2 for the benchmark that chose these defaults.
+ */
+#ifndef MPSDEM_LINSOLVE_LINSOLVE_H
+#define MPSDEM_LINSOLVE_LINSOLVE_H
+
+#include <stdint.h>
+
+struct dict;
+
+struct csr_matrix {           /* square, rows in any order of columns (not necessarily sorted) */
+    int n;                    /* rows                                    */
+    int64_t nnz;
+    int64_t *rowptr;          /* n+1                                     */
+    int32_t *col;             /* nnz                                     */
+    double  *val;             /* nnz                                     */
+};
+struct linsolve_stats { int iters; double res_rel; double setup_s, solve_s; int converged; };
+struct linsolve;              /* opaque: a selected, configured solver with its work storage */
+/* Read `solver` (pcg | bicgstab | cholmod | hypre, default pcg), `preconditioner` (none | jacobi | ic0 | dic, default jacobi),
+ * `tolerance` (relative on ||b - Ax||_2/||b||_2, default 1e-8), `maxIter` (default 1000), `warmStart` (yes) from d
+ * (e.g. the PPE sub-dictionary of system/mpsSolution); logs "Selecting ...". */
+int  linsolve_create(const struct dict *d, struct linsolve **out);
+/* Same from plain values, for tests and tools. */
+int  linsolve_create_named(const char *solver, const char *precond, double tol, int maxiter, struct linsolve **out);
+/* Solve A x = b. x holds the initial guess on entry (warm start) — ignored (zeroed) when warmStart is off.
+ * Not converged within maxIter -> SIM_ERR_SOLVER with iterations and residual in the message, x left at the last iterate.
+ * Storage is reused across calls; no allocation once sizes stop growing. */
+int  linsolve_solve(struct linsolve *s, const struct csr_matrix *A, const double *b, double *x, struct linsolve_stats *st);
+void linsolve_free(struct linsolve *s);
+
+#endif
