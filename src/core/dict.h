@@ -8,7 +8,7 @@
  *   value   := word | number | "string" | '(' value* ')' | '{' entry* '}'
  *            | '[' n n n n n n n ']'          (dimension set, SI exponents:
  *                                              kg m s K mol A cd)
- *   comments: // to end of line, and /* ... *\/
+ *   comments: // to end of line, and C block comments
  *   $var, $sub/var, $../var, $/abs/var  substitute an entry's value; a bare
  *   `$var;` inside a dictionary merges the named sub-dictionary there.
  *   #include "file" is relative to the including file, with a cycle check.
