@@ -1,0 +1,53 @@
+/* test_kernels.c — property tests over every registered MPS kernel
+ * (STYLE.md C12 level 1): compact support, non-negative, non-increasing,
+ * the array entry equal to the scalar one bit for bit, and n0 > 0 with
+ * lambda between dp^2 and r_e^2 on the lattice. */
+#include <setjmp.h>
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdint.h>
+#include <cmocka.h>
+#include <math.h>
+#include <string.h>
+
+#include "mps/kernel/kernel.h"
+#include "mps/operators.h"
+
+static void test_properties(void **s)
+{
+    (void)s;
+    const double re = 0.021;
+    enum { N = 1001 };
+    double r[N], w[N];
+    for (int k = 0; k < N; k++)
+        r[k] = 1.2 * re * k / (N - 1);
+    for (int m = 0; mps_kernel_table[m]; m++) {
+        const struct mps_kernel_ops *K = mps_kernel_table[m];
+        assert_non_null(K->name);
+        assert_non_null(K->reference);
+        K->weights(r, N, re, w);
+        for (int k = 0; k < N; k++) {
+            double wk = K->w(r[k], re);
+            assert_memory_equal(&wk, &w[k], sizeof wk);
+            assert_true(wk >= 0);
+            assert_true(isfinite(wk));
+            if (r[k] >= re)
+                assert_true(wk == 0);
+            if (k)
+                assert_true(w[k] <= w[k - 1]);
+        }
+        /* continuity at r_e */
+        assert_true(K->w(re * (1 - 1e-9), re) < 1e-6);
+        struct mps_lattice L;
+        assert_int_equal(mps_lattice_constants(K, 3, re / 2.1, re, &L), 0);
+        assert_true(L.n0 > 0);
+        assert_true(L.lambda > pow(re / 2.1, 2) && L.lambda < re * re);
+        assert_int_equal(L.nnb, 32);
+    }
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = { cmocka_unit_test(test_properties) };
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}
