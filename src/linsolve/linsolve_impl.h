@@ -1,0 +1,136 @@
+/*
+ * linsolve_impl.h — internals shared by the solver and preconditioner files
+ * of src/linsolve (not for use outside this library and its tests).
+ *
+ * A solver and a preconditioner are each a model (STYLE.md C3): a const ops
+ * table selected by name from a NULL-terminated registry. The facade
+ * (linsolve.c) validates the matrix and the right-hand side, owns the work
+ * storage, times set-up and solve, and checks the true residual of every
+ * answer, so a solver only has to produce x.
+ */
+#ifndef MPSDEM_LINSOLVE_IMPL_H
+#define MPSDEM_LINSOLVE_IMPL_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+#include "linsolve/linsolve.h"
+
+struct linsolve;
+struct precond;
+
+/* ---- preconditioners ------------------------------------------------------ */
+
+struct precond_ops {
+    const char *name;
+    const char *reference;
+    /* z = M^-1 r is symmetric positive definite whenever A is SPD, so PCG
+     * may use it. */
+    int spd;
+    /* Built from the lower triangle only: meaningless for a non-symmetric
+     * A, so BiCGSTAB refuses it. */
+    int lower_only;
+    /* M is diagonal and pc->dinv holds M^-1: PCG fuses it into its vector
+     * updates (the fast path). */
+    int diagonal;
+    /* Build M for A (validated; diag = its diagonal, all > 0). */
+    int (*setup)(struct precond *pc, const struct csr_matrix *A,
+                 const double *diag);
+    /* z = M^-1 r (r and z distinct). */
+    void (*apply)(const struct precond *pc, const double *r, double *z);
+};
+
+/* Storage of every preconditioner, grown on demand and kept across solves. */
+struct precond {
+    const struct precond_ops *ops;
+    int n;
+    double *dinv;            /* n: inverse of a diagonal (jacobi, dic)     */
+    int64_t *fp;             /* n+1: factor rows (ic0: L, ilu0: L\U)       */
+    int32_t *fc;             /* factor columns, sorted within a row         */
+    double *fv;              /* factor values                               */
+    int64_t *fdiag;          /* n: position of the diagonal in each row     */
+    int32_t *pos;            /* n: scatter map, -1 outside the current row  */
+    double *y;               /* n: intermediate of the triangular solves    */
+    const struct csr_matrix *A; /* dic applies with A's own entries         */
+    int n_cap;
+    int64_t nnz_cap;
+    double shift;            /* diagonal shift used after a breakdown, or 0 */
+};
+
+extern const struct precond_ops precond_none, precond_jacobi, precond_ic0,
+    precond_dic, precond_ilu0;
+extern const struct precond_ops *const linsolve_preconditioners[];
+
+/* Make room for n rows and nnz factor entries in pc (keeps old storage when
+ * it is large enough). */
+int precond_reserve(struct precond *pc, int n, int64_t nnz, int factor);
+void precond_release(struct precond *pc);
+
+/* Copy the rows of A into pc's factor arrays with columns sorted, keeping
+ * only j <= i when lower_only; fdiag[i] gives the diagonal entry. */
+int precond_sorted_copy(struct precond *pc, const struct csr_matrix *A,
+                        int lower_only);
+
+/* ---- solvers -------------------------------------------------------------- */
+
+struct solver_ops {
+    const char *name;
+    const char *reference;
+    int iterative;       /* uses the preconditioner, maxIter and warm start */
+    int needs_symmetric; /* refuses a non-symmetric matrix                  */
+    int needs_spd_pc;    /* needs a preconditioner with ops->spd            */
+    /* Called once at creation; may refuse (e.g. not compiled in). */
+    int (*init)(struct linsolve *s);
+    /* x: initial guess on entry (iterative solvers), solution on exit.
+     * Iterate until ||b - A x||_2 <= tolabs (> 0) or maxiter; set st->iters.
+     * The facade checks the final true residual, so running out of
+     * iterations is not an error here. */
+    int (*solve)(struct linsolve *s, const struct csr_matrix *A,
+                 const double *b, double *x, double tolabs,
+                 struct linsolve_stats *st);
+    void (*fini)(struct linsolve *s);
+};
+
+extern const struct solver_ops solver_pcg, solver_bicgstab, solver_cholmod,
+    solver_hypre;
+extern const struct solver_ops *const linsolve_solvers[];
+
+#define LINSOLVE_NWORK 8
+
+struct linsolve {
+    const struct solver_ops *solver;
+    struct precond pc;
+    double tol;          /* relative, on ||b - A x||_2 / ||b||_2           */
+    int maxiter;
+    int warm_start;
+    int generic;         /* tests: bypass the fused Jacobi fast path       */
+    int n_cap;
+    double *diag;        /* n: diagonal of the current matrix               */
+    double *work[LINSOLVE_NWORK]; /* n each: solver vectors                 */
+    void *ext;           /* solver-private state (CHOLMOD common, ...)     */
+};
+
+/* Check the preconditioner and solver combination (messages name both). */
+int linsolve_check_combination(const struct solver_ops *so,
+                               const struct precond_ops *po);
+
+/* Internal solve with an absolute tolerance override (> 0) on ||b-Ax||_2,
+ * used by the SUNLinearSolver adapter. */
+int linsolve_solve_abs(struct linsolve *s, const struct csr_matrix *A,
+                       const double *b, double *x, double abstol,
+                       struct linsolve_stats *st);
+
+/* ---- vector kernels (OpenMP) ---------------------------------------------- */
+
+/* q = A p; returns p.q */
+double csr_spmv_dot(const struct csr_matrix *A, const double *p, double *q);
+/* r = b - A x; returns r.r */
+double csr_residual(const struct csr_matrix *A, const double *b,
+                    const double *x, double *r);
+double vec_dot(int n, const double *a, const double *b);
+void vec_copy(int n, const double *a, double *b);
+void vec_zero(int n, double *a);
+
+double linsolve_wtime(void);
+
+#endif
