@@ -19,6 +19,17 @@
 const struct solver_ops *const linsolve_solvers[] = {
     &solver_pcg, &solver_bicgstab, &solver_cholmod, &solver_hypre, NULL};
 
+/* Like find() of core/select.h, which lives in an object file with
+ * model_select() and so would pull the dictionary code into programs that
+ * never read one. */
+static const void *find(const void *const *table, const char *name)
+{
+    for (int i = 0; table[i]; i++)
+        if (strcmp(((const struct model_head *)table[i])->name, name) == 0)
+            return table[i];
+    return NULL;
+}
+
 static void list_names(const void *const *table, char *buf, size_t len)
 {
     size_t used = 0;
@@ -50,13 +61,13 @@ int linsolve_create_named(const char *solver, const char *precond, double tol,
     char valid[256];
     *out = NULL;
     const struct solver_ops *so =
-        model_find((const void *const *)linsolve_solvers, solver ? solver : "");
+        find((const void *const *)linsolve_solvers, solver ? solver : "");
     if (!so) {
         list_names((const void *const *)linsolve_solvers, valid, sizeof valid);
         return sim_error(SIM_ERR_INPUT, "unknown linear solver '%s'; valid:%s",
                          solver ? solver : "(null)", valid);
     }
-    const struct precond_ops *po = model_find(
+    const struct precond_ops *po = find(
         (const void *const *)linsolve_preconditioners, precond ? precond : "");
     if (!po) {
         list_names((const void *const *)linsolve_preconditioners, valid,

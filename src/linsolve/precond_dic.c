@@ -37,16 +37,19 @@ static int setup(struct precond *pc, const struct csr_matrix *A,
     TRY(precond_reserve(pc, A->n, 0, 0));
     pc->A = A;
     double alpha = 0.0;
+    int first = -1;
     for (int attempt = 0; attempt < 30; attempt++) {
         int row = factor(pc, A, diag, alpha);
         if (row < 0) {
             pc->shift = alpha;
+            if (alpha > 0.0)
+                log_warn("DIC: non-positive pivot at row %d; factorised "
+                         "A + %g diag(A) instead", first, alpha);
             return SIM_OK;
         }
-        double next = alpha == 0.0 ? 1e-3 : 4.0 * alpha;
-        log_warn("DIC: non-positive pivot at row %d with diagonal shift %g; "
-                 "retrying with A + %g diag(A)", row, alpha, next);
-        alpha = next;
+        if (first < 0)
+            first = row;
+        alpha = alpha == 0.0 ? 1e-3 : 4.0 * alpha;
     }
     return sim_error(SIM_ERR_SOLVER, "DIC broke down even with a diagonal "
                      "shift of %g diag(A); the matrix is probably not SPD",

@@ -58,6 +58,7 @@ static int setup(struct precond *pc, const struct csr_matrix *A,
 {
     (void)diag;
     double alpha = 0.0;
+    int first = -1;
     for (int attempt = 0; attempt < 30; attempt++) {
         TRY(precond_sorted_copy(pc, A, 1));
         for (int i = 0; i < A->n; i++)
@@ -67,12 +68,14 @@ static int setup(struct precond *pc, const struct csr_matrix *A,
         int row = factor(pc, A, alpha);
         if (row < 0) {
             pc->shift = alpha;
+            if (alpha > 0.0)
+                log_warn("IC(0): non-positive pivot at row %d; factorised "
+                         "A + %g diag(A) instead", first, alpha);
             return SIM_OK;
         }
-        double next = alpha == 0.0 ? 1e-3 : 4.0 * alpha;
-        log_warn("IC(0): non-positive pivot at row %d with diagonal shift %g;"
-                 " retrying with A + %g diag(A)", row, alpha, next);
-        alpha = next;
+        if (first < 0)
+            first = row;
+        alpha = alpha == 0.0 ? 1e-3 : 4.0 * alpha;
     }
     return sim_error(SIM_ERR_SOLVER, "IC(0) broke down even with a diagonal "
                      "shift of %g diag(A); the matrix is probably not SPD",

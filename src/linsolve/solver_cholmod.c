@@ -60,6 +60,7 @@ static int init(struct linsolve *s)
         return sim_error(SIM_ERR_EXTERNAL, "CHOLMOD: cholmod_start failed");
     }
     c->error_handler = quiet_handler;
+    c->print = 0;
     c->supernodal = CHOLMOD_SUPERNODAL;
     c->nmethods = 1;
     c->method[0].ordering = CHOLMOD_AMD;
