@@ -33,9 +33,11 @@ int linsolve_create(const struct dict *d, struct linsolve **out)
     TRY(model_select(d, "solver", "linear solver",
                      (const void *const *)linsolve_solvers, "pcg", &so));
     const struct solver_ops *sops = so;
-    TRY(model_select(d, "preconditioner", "preconditioner",
-                     (const void *const *)linsolve_preconditioners,
-                     sops->iterative ? "jacobi" : "none", &po));
+    po = &precond_none; /* a direct solver reads no preconditioner */
+    if (sops->iterative)
+        TRY(model_select(d, "preconditioner", "preconditioner",
+                         (const void *const *)linsolve_preconditioners,
+                         "jacobi", &po));
     TRY(dict_get_scalar_or(d, "tolerance", 1e-8, &tol));
     if (!(tol > 0.0 && tol < 1.0))
         return dict_error(d, "tolerance", SIM_ERR_DICT, "tolerance %g is not "

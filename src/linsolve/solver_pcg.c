@@ -43,9 +43,16 @@ static double update_diag(int n, double alpha, const double *p,
     return rr;
 }
 
+/* p = M^-1 r + beta p; beta = 0 starts afresh (p may hold garbage). */
 static void direction_diag(int n, double beta, const double *r,
                            const double *dinv, double *p)
 {
+    if (beta == 0.0) {
+#pragma omp parallel for schedule(static)
+        for (int i = 0; i < n; i++)
+            p[i] = dinv[i] * r[i];
+        return;
+    }
 #pragma omp parallel for schedule(static)
     for (int i = 0; i < n; i++)
         p[i] = dinv[i] * r[i] + beta * p[i];
