@@ -1,0 +1,235 @@
+/*
+ * channel_wait.c — how a channel waits without ever waiting forever:
+ * futex sleeps in short slices, the peer watched through a pidfd, its state
+ * word and its heartbeat, and a heartbeat thread of our own.
+ *
+ * Why a pidfd: kill(pid, 0) still succeeds for a killed process that its
+ * parent has not reaped yet (a zombie), and pids are reused; a pidfd becomes
+ * readable the moment the process exits, zombie or not (toolchain.md §4).
+ * Why a heartbeat thread: the main thread may compute for minutes between
+ * messages; the beat shows the program is alive, and its absence shows a
+ * program that is stopped (SIGSTOP) or wedged.
+ */
+#include "coupling/channel_impl.h"
+#include "core/error.h"
+
+#include <errno.h>
+#include <limits.h>
+#include <linux/futex.h>
+#include <poll.h>
+#include <signal.h>
+#include <string.h>
+#include <sys/pidfd.h>
+#include <sys/syscall.h>
+#include <time.h>
+#include <unistd.h>
+
+uint64_t chan_now_ns(void)
+{
+    struct timespec ts;
+    clock_gettime(CLOCK_MONOTONIC, &ts);
+    return (uint64_t)ts.tv_sec * 1000000000ULL + (uint64_t)ts.tv_nsec;
+}
+
+/* No FUTEX_PRIVATE_FLAG: the word is shared between processes. */
+static void futex_wait(_Atomic uint32_t *word, uint32_t val, long ns)
+{
+    struct timespec ts = { ns / 1000000000L, ns % 1000000000L };
+    syscall(SYS_futex, (uint32_t *)word, FUTEX_WAIT, val, &ts, NULL, 0);
+}
+
+void chan_futex_wake(_Atomic uint32_t *word)
+{
+    atomic_fetch_add(word, 1);
+    syscall(SYS_futex, (uint32_t *)word, FUTEX_WAKE, INT_MAX, NULL, NULL, 0);
+}
+
+void chan_set_state(struct channel *c, int state)
+{
+    atomic_store(&c->hdr->side[c->side].state, state);
+    chan_futex_wake(&c->hdr->state_futex);
+    /* a peer asleep on a ring must notice too */
+    for (int r = 0; r < 2; r++) {
+        chan_futex_wake(&c->hdr->ring[r].head_futex);
+        chan_futex_wake(&c->hdr->ring[r].tail_futex);
+    }
+}
+
+int chan_check_signal(const struct channel *c)
+{
+    int sig = channel_interrupted();
+    if (sig)
+        return sim_error(SIM_ERR_INTERRUPT,
+                         "%s: interrupted by signal %s while coupled with "
+                         "%s through %s", c->set.program, sigabbrev_np(sig),
+                         c->peer_program[0] ? c->peer_program : "its peer",
+                         c->set.name);
+    return SIM_OK;
+}
+
+int chan_watch_peer(struct channel *c)
+{
+    const struct chan_side *p = &c->hdr->side[c->peer];
+    pid_t pid = atomic_load(&p->pid);
+
+    if (c->peer_pidfd >= 0 || pid <= 0)
+        return SIM_OK;
+    c->peer_pid = pid;
+    memcpy(c->peer_program, p->program, sizeof c->peer_program);
+    c->peer_program[sizeof c->peer_program - 1] = '\0';
+    if (!c->peer_program[0])
+        strcpy(c->peer_program, c->peer == CHANNEL_FLUID ? "fluid program"
+                                                          : "solid program");
+    c->peer_pidfd = pidfd_open(pid, 0);
+    if (c->peer_pidfd < 0 && errno == ESRCH)
+        return sim_error(SIM_ERR_PEER, "%s: peer %s (pid %d) exited before "
+                         "the handshake ended", c->set.program,
+                         c->peer_program, (int)pid);
+    if (c->peer_pidfd < 0)
+        return sim_error(SIM_ERR_IO, "%s: pidfd_open(%d): %s",
+                         c->set.program, (int)pid, strerror(errno));
+    return SIM_OK;
+}
+
+static int peer_left(struct channel *c, int state)
+{
+    const struct chan_side *p = &c->hdr->side[c->peer];
+    int code = atomic_load(&p->exit_code);
+
+    if (state == SIDE_CLOSED)
+        return sim_error(SIM_ERR_PEER, "%s: peer %s (pid %d) closed the "
+                         "channel %s", c->set.program, c->peer_program,
+                         (int)c->peer_pid, c->set.name);
+    return sim_error(SIM_ERR_PEER, "%s: peer %s (pid %d) stopped with an "
+                     "error (%s)", c->set.program, c->peer_program,
+                     (int)c->peer_pid, sim_strerror(code));
+}
+
+int chan_check_peer(struct channel *c)
+{
+    const struct chan_side *p = &c->hdr->side[c->peer];
+    int state = atomic_load(&p->state);
+
+    TRY(chan_check_signal(c));
+    TRY(chan_watch_peer(c));
+    if (state == SIDE_CLOSED || state == SIDE_FAILED)
+        return peer_left(c, state);
+    if (c->peer_pidfd >= 0) {
+        struct pollfd pfd = { .fd = c->peer_pidfd, .events = POLLIN };
+        if (poll(&pfd, 1, 0) > 0)
+            return sim_error(SIM_ERR_PEER, "%s: peer %s (pid %d) died "
+                             "without closing the channel (killed or "
+                             "crashed)", c->set.program, c->peer_program,
+                             (int)c->peer_pid);
+        uint64_t beat = atomic_load(&p->heartbeat_ns), now = chan_now_ns();
+        if (beat && now > beat && now - beat > c->hung_ns)
+            return sim_error(SIM_ERR_PEER, "%s: peer %s (pid %d) sent no "
+                             "heartbeat for %.1f s: it is stopped or hung",
+                             c->set.program, c->peer_program,
+                             (int)c->peer_pid, (double)(now - beat) * 1e-9);
+    }
+    return SIM_OK;
+}
+
+static inline void cpu_relax(void)
+{
+#if defined(__x86_64__) || defined(__i386__)
+    __builtin_ia32_pause();
+#endif
+}
+
+int chan_wait(struct channel *c, int (*ready)(struct channel *, void *),
+              void *arg, _Atomic uint32_t *word, _Atomic uint32_t *waiting,
+              double timeout, const char *what)
+{
+    /* a peer that always answers at once must not hide a signal */
+    TRY(chan_check_signal(c));
+    for (int i = 0; i < CHAN_SPIN; i++) {
+        if (ready(c, arg))
+            return SIM_OK;
+        cpu_relax();
+    }
+    uint64_t t0 = chan_now_ns(), limit = (uint64_t)(timeout * 1e9);
+    for (;;) {
+        if (waiting)
+            atomic_store(waiting, 1);
+        uint32_t v = atomic_load(word);
+        if (ready(c, arg))
+            break;
+        uint64_t used = chan_now_ns() - t0;
+        long slice = used >= limit ? 0 : (long)(limit - used);
+        futex_wait(word, v, slice < CHAN_SLICE_NS ? slice : CHAN_SLICE_NS);
+        if (waiting)
+            atomic_store(waiting, 0);
+        if (ready(c, arg))
+            return SIM_OK;
+        TRY(chan_check_peer(c));
+        if (chan_now_ns() - t0 >= limit)
+            return sim_error(SIM_ERR_TIMEOUT, "%s: no %s within %g s "
+                             "(timeout in system/couplingDict)",
+                             c->set.program, what, timeout);
+    }
+    if (waiting)
+        atomic_store(waiting, 0);
+    return SIM_OK;
+}
+
+/* ---- heartbeat ------------------------------------------------------------ */
+
+static void *heartbeat_main(void *arg)
+{
+    struct channel *c = arg;
+    _Atomic uint64_t *beat = &c->hdr->side[c->side].heartbeat_ns;
+    long period = (long)(c->set.heartbeat_interval * 1e9);
+
+    pthread_mutex_lock(&c->hb_lock);
+    while (!c->hb_stop) {
+        atomic_store(beat, chan_now_ns());
+        struct timespec ts;
+        clock_gettime(CLOCK_MONOTONIC, &ts);
+        ts.tv_nsec += period % 1000000000L;
+        ts.tv_sec += period / 1000000000L + ts.tv_nsec / 1000000000L;
+        ts.tv_nsec %= 1000000000L;
+        pthread_cond_timedwait(&c->hb_cond, &c->hb_lock, &ts);
+    }
+    pthread_mutex_unlock(&c->hb_lock);
+    return NULL;
+}
+
+int chan_heartbeat_start(struct channel *c)
+{
+    pthread_condattr_t ca;
+    sigset_t all, old;
+    int rc;
+
+    atomic_store(&c->hdr->side[c->side].heartbeat_ns, chan_now_ns());
+    pthread_mutex_init(&c->hb_lock, NULL);
+    pthread_condattr_init(&ca);
+    pthread_condattr_setclock(&ca, CLOCK_MONOTONIC);
+    pthread_cond_init(&c->hb_cond, &ca);
+    pthread_condattr_destroy(&ca);
+    /* signals belong to the main thread, whose waits must see them */
+    sigfillset(&all);
+    pthread_sigmask(SIG_BLOCK, &all, &old);
+    rc = pthread_create(&c->hb_thread, NULL, heartbeat_main, c);
+    pthread_sigmask(SIG_SETMASK, &old, NULL);
+    if (rc != 0)
+        return sim_error(SIM_ERR_IO, "%s: cannot start the heartbeat "
+                         "thread: %s", c->set.program, strerror(rc));
+    c->hb_running = 1;
+    return SIM_OK;
+}
+
+void chan_heartbeat_stop(struct channel *c)
+{
+    if (!c->hb_running)
+        return;
+    pthread_mutex_lock(&c->hb_lock);
+    c->hb_stop = 1;
+    pthread_cond_signal(&c->hb_cond);
+    pthread_mutex_unlock(&c->hb_lock);
+    pthread_join(c->hb_thread, NULL);
+    pthread_cond_destroy(&c->hb_cond);
+    pthread_mutex_destroy(&c->hb_lock);
+    c->hb_running = 0;
+}
