@@ -1,0 +1,32 @@
+/*
+ * normal_hertz.c — Hertz law, option (H) of METHODS.md A0-09 (the default):
+ *
+ *   F_el = chi^n delta^{3/2},        chi^n = (4/3) E* sqrt(R*)        (21)
+ *   kn   = dF_el/d delta = (3/2) chi^n delta^{1/2}
+ *   kt   = chi^t delta^{1/2},        chi^t = chi^n/(2 + nu)           (22)
+ *
+ * kn, the tangent stiffness, enters the damping of eq. (23) (A0-09) and the
+ * stability bound. Reference: Hertz (1882); Xie et al. (2025) eqs. (19)-(22)
+ * with the Hertz reading of A0-09. Valid for small elastic overlaps
+ * (delta << R).
+ */
+#include <math.h>
+
+#include "dem/contact/contact.h"
+
+static void eval_hertz(const struct contact_coeffs *c,
+                       const struct contact_geom *g, double *fel, double *kn,
+                       double *kt)
+{
+    double chi = contact_chi(c, g->rstar);
+    double sd = sqrt(g->delta);
+    *fel = chi * g->delta * sd;
+    *kn = 1.5 * chi * sd;
+    *kt = c->ratio_t * chi * sd;
+}
+
+const struct contact_normal_ops contact_normal_hertz = {
+    .name = "hertz",
+    .reference = "Hertz 1882; Xie et al. 2025 eqs. 19-22, METHODS A0-09 (H)",
+    .eval = eval_hertz,
+};

@@ -1,0 +1,289 @@
+/*
+ * dem.c — grain storage, set-up and the bookkeeping around forces:
+ * neighbour rebuilds with history carry-over, domain checks, energies.
+ * The force loop itself is in dem_forces.c.
+ */
+#include "dem/dem.h"
+
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "core/error.h"
+
+void dem_init(struct dem *d)
+{
+    memset(d, 0, sizeof *d);
+    nlist_init(&d->nl, 0);
+    d->gravity[2] = -9.81;
+}
+
+void dem_free(struct dem *d)
+{
+    free(d->x); free(d->v); free(d->w); free(d->r); free(d->m);
+    free(d->inv_m); free(d->inv_i); free(d->group); free(d->id);
+    free(d->acc); free(d->alpha);
+    free(d->walls);
+    nlist_free(&d->nl);
+    free(d->hist); free(d->hnew); free(d->whist); free(d->whnew);
+    free(d->tbuf);
+    free(d->cpl.fd); free(d->cpl.fd_sum);
+    memset(d, 0, sizeof *d);
+}
+
+#define GROW(p, count)                                                    \
+    do {                                                                  \
+        void *q_ = sim_realloc((p), (count) * sizeof *(p));               \
+        if (!q_)                                                          \
+            return SIM_ERR_NOMEM;                                         \
+        (p) = q_;                                                         \
+    } while (0)
+
+int dem_resize(struct dem *d, size_t n)
+{
+    if (n > d->cap || !d->x) {
+        size_t cap = n > 0 ? n : 1;
+        GROW(d->x, 3 * cap); GROW(d->v, 3 * cap); GROW(d->w, 3 * cap);
+        GROW(d->acc, 3 * cap); GROW(d->alpha, 3 * cap);
+        GROW(d->r, cap); GROW(d->m, cap); GROW(d->inv_m, cap);
+        GROW(d->inv_i, cap); GROW(d->group, cap); GROW(d->id, cap);
+        GROW(d->cpl.fd, 3 * cap); GROW(d->cpl.fd_sum, 3 * cap);
+        for (size_t i = d->n; i < cap; i++) {
+            for (int a = 0; a < 3; a++)
+                d->x[3 * i + a] = d->v[3 * i + a] = d->w[3 * i + a] = 0;
+            for (int a = 0; a < 3; a++)
+                d->cpl.fd[3 * i + a] = d->cpl.fd_sum[3 * i + a] = 0;
+            d->r[i] = 0, d->group[i] = 0, d->id[i] = (int64_t)i;
+        }
+        d->cap = cap;
+    }
+    d->n = n;
+    return SIM_OK;
+}
+
+static int reserve_histories(struct dem *d)
+{
+    size_t np = d->nl.npairs > 0 ? d->nl.npairs : 1;
+    if (np > d->hist_cap) {
+        size_t cap = np + np / 2;
+        GROW(d->hist, 3 * cap);
+        GROW(d->hnew, 3 * cap);
+        d->hist_cap = cap;
+    }
+    size_t nw = d->n * (size_t)d->nwalls;
+    nw = nw > 0 ? nw : 1;
+    if (nw > d->whist_cap) {
+        GROW(d->whist, 3 * nw);
+        GROW(d->whnew, 3 * nw);
+        d->whist_cap = nw;
+    }
+    return SIM_OK;
+}
+
+int dem_setup(struct dem *d)
+{
+    double rho = d->law.c.rho;
+    d->rmin = INFINITY, d->rmax = 0;
+    for (size_t i = 0; i < d->n; i++) {
+        double r = d->r[i];
+        if (!(r > 0))
+            return sim_error(SIM_ERR_INPUT,
+                             "grain %zu (id %lld) has radius %g <= 0", i,
+                             (long long)d->id[i], r);
+        d->m[i] = rho * 4.0 / 3.0 * M_PI * r * r * r;
+        d->inv_m[i] = 1.0 / d->m[i];
+        d->inv_i[i] = 1.0 / (0.4 * d->m[i] * r * r);
+        d->rmin = fmin(d->rmin, r);
+        d->rmax = fmax(d->rmax, r);
+    }
+    if (d->n == 0)
+        d->rmin = d->rmax = 0;
+    d->dt_rayleigh = d->n ? contact_rayleigh_step(&d->law.c, d->rmin) : 0;
+    if (d->nl.skin <= 0)
+        d->nl.skin = 0.2 * d->rmax;   /* decision: 10 % of a diameter */
+    TRY(nlist_build(&d->nl, d->n, d->x, d->r));
+    d->stats.rebuilds++;
+    TRY(reserve_histories(d));
+    memset(d->hist, 0, 3 * d->hist_cap * sizeof *d->hist);
+    memset(d->hnew, 0, 3 * d->hist_cap * sizeof *d->hnew);
+    memset(d->whist, 0, 3 * d->whist_cap * sizeof *d->whist);
+    memset(d->whnew, 0, 3 * d->whist_cap * sizeof *d->whnew);
+    return SIM_OK;
+}
+
+void dem_commit_history(struct dem *d)
+{
+    double *t = d->hist;
+    d->hist = d->hnew;
+    d->hnew = t;
+    t = d->whist;
+    d->whist = d->whnew;
+    d->whnew = t;
+}
+
+/* Rebuild with the histories following their pairs. `map` (old index ->
+ * new index, or SIZE_MAX for a removed grain) is NULL when the numbering
+ * did not change. */
+static int rebuild(struct dem *d, const double *x, const size_t *map,
+                   size_t old_n)
+{
+    size_t on = d->nl.n;
+    size_t onp = d->nl.npairs;
+    size_t *ostart = sim_malloc((on + 1) * sizeof *ostart);
+    uint32_t *oj = sim_malloc((onp ? onp : 1) * sizeof *oj);
+    double *oh = sim_malloc(3 * (onp ? onp : 1) * sizeof *oh);
+    if (!ostart || !oj || !oh) {
+        free(ostart), free(oj), free(oh);
+        return SIM_ERR_NOMEM;
+    }
+    /* Renumber the old list into the new numbering (monotone, so rows stay
+     * sorted); pairs of removed grains are dropped. */
+    size_t k = 0, row = 0;
+    ostart[0] = 0;
+    for (size_t i = 0; i < on; i++) {
+        size_t ni = map ? map[i] : i;
+        if (map && ni == SIZE_MAX)
+            continue;
+        for (size_t p = d->nl.start[i]; p < d->nl.start[i + 1]; p++) {
+            size_t nj = map ? map[d->nl.j[p]] : d->nl.j[p];
+            if (nj == SIZE_MAX)
+                continue;
+            oj[k] = (uint32_t)nj;
+            memcpy(&oh[3 * k], &d->hist[3 * p], 3 * sizeof *oh);
+            k++;
+        }
+        ostart[++row] = k;
+    }
+    (void)old_n;
+    int rc = nlist_build(&d->nl, d->n, x, d->r);
+    if (rc == SIM_OK)
+        rc = reserve_histories(d);
+    if (rc == SIM_OK)
+        nlist_carry(&d->nl, ostart, oj, row, oh, 3, d->hist);
+    d->stats.rebuilds++;
+    free(ostart), free(oj), free(oh);
+    return rc;
+}
+
+int dem_update_neighbours(struct dem *d, const double *x)
+{
+    if (!nlist_stale(&d->nl, d->n, x))
+        return SIM_OK;
+    return rebuild(d, x, NULL, d->n);
+}
+
+static int outside(const struct dem *d, size_t i)
+{
+    for (int a = 0; a < 3; a++) {
+        double xa = d->x[3 * i + a];
+        if (!(xa >= d->dom_lo[a] && xa <= d->dom_hi[a]))
+            return 1;
+    }
+    return 0;
+}
+
+long dem_check_domain(struct dem *d)
+{
+    if (!d->have_domain)
+        return 0;
+    long count = 0;
+    for (size_t i = 0; i < d->n; i++)
+        count += outside(d, i);
+    if (count == 0 || !d->remove_outside)
+        return count;
+    size_t *map = sim_malloc(d->n * sizeof *map);
+    if (!map)
+        return count;  /* keep them: memory is too short to remove */
+    size_t k = 0, old_n = d->n;
+    for (size_t i = 0; i < old_n; i++) {
+        if (outside(d, i)) {
+            map[i] = SIZE_MAX;
+            continue;
+        }
+        map[i] = k;
+        if (k != i) {
+            memcpy(&d->x[3 * k], &d->x[3 * i], 3 * sizeof(double));
+            memcpy(&d->v[3 * k], &d->v[3 * i], 3 * sizeof(double));
+            memcpy(&d->w[3 * k], &d->w[3 * i], 3 * sizeof(double));
+            for (int wl = 0; wl < d->nwalls; wl++)
+                memcpy(&d->whist[3 * (k * d->nwalls + wl)],
+                       &d->whist[3 * (i * d->nwalls + wl)], 3 * sizeof(double));
+            d->r[k] = d->r[i], d->m[k] = d->m[i];
+            d->inv_m[k] = d->inv_m[i], d->inv_i[k] = d->inv_i[i];
+            d->group[k] = d->group[i], d->id[k] = d->id[i];
+        }
+        k++;
+    }
+    d->n = k;
+    d->stats.removed += count;
+    int rc = rebuild(d, d->x, map, old_n);
+    free(map);
+    return rc == SIM_OK ? count : -1;
+}
+
+void dem_overlap_stats(struct dem *d, double frac, long *count,
+                       double *max_rel)
+{
+    long c = 0;
+    double mr = 0;
+    for (size_t i = 0; i < d->n; i++) {
+        for (size_t p = d->nl.start[i]; p < d->nl.start[i + 1]; p++) {
+            size_t j = d->nl.j[p];
+            double d2 = 0;
+            for (int a = 0; a < 3; a++) {
+                double dx = d->x[3 * j + a] - d->x[3 * i + a];
+                d2 += dx * dx;
+            }
+            double rel = (d->r[i] + d->r[j] - sqrt(d2))
+                         / fmin(d->r[i], d->r[j]);
+            mr = fmax(mr, rel);
+            c += rel > frac;
+        }
+        for (int wl = 0; wl < d->nwalls; wl++) {
+            double n[3], delta;
+            if (wall_contact(&d->walls[wl], &d->x[3 * i], d->r[i], n, &delta)) {
+                double rel = delta / d->r[i];
+                mr = fmax(mr, rel);
+                c += rel > frac;
+            }
+        }
+    }
+    *count = c;
+    *max_rel = mr;
+}
+
+double dem_contact_step(const struct dem *d)
+{
+    if (d->ncontacts + d->nwall_contacts == 0)
+        return 0;
+    double h = d->dt_rayleigh;
+    if (d->omega2_max > 0)
+        h = fmin(h, 2.0 / sqrt(d->omega2_max));
+    return h;
+}
+
+double dem_kinetic_energy(const struct dem *d)
+{
+    double e = 0;
+    #pragma omp parallel for reduction(+ : e) schedule(static)
+    for (size_t i = 0; i < d->n; i++) {
+        double v2 = 0, w2 = 0;
+        for (int a = 0; a < 3; a++) {
+            v2 += d->v[3 * i + a] * d->v[3 * i + a];
+            w2 += d->w[3 * i + a] * d->w[3 * i + a];
+        }
+        e += 0.5 * d->m[i] * v2 + 0.5 * w2 / d->inv_i[i];
+    }
+    return e;
+}
+
+double dem_mean_drag(struct dem *d, double *fd)
+{
+    double T = d->cpl.sum_time;
+    for (size_t k = 0; k < 3 * d->n; k++) {
+        fd[k] = T > 0 ? d->cpl.fd_sum[k] / T : 0.0;
+        d->cpl.fd_sum[k] = 0;
+    }
+    d->cpl.sum_time = 0;
+    return T;
+}

@@ -1,0 +1,146 @@
+/*
+ * dem.h — the DEM library: spheres with translation and rotation (METHODS.md
+ * A.6, eqs. 17-18), contact laws assembled from sub-models (contact.h),
+ * analytic walls (wall.h), a Verlet-skin neighbour list (nlist.h), and time
+ * integrators selected by name (integrator.h).
+ *
+ * Storage is structure-of-arrays; vectors are interleaved (3 doubles per
+ * grain, z = 0 in 2-D) so that clouds are written without copies. Nothing is
+ * allocated inside the time loop except when the neighbour list or the
+ * number of contacts outgrows its capacity.
+ *
+ * The coupling interface (used by the MPS-DEM coupling): before advancing to
+ * a coupling time the caller may set, per grain, an external force and the
+ * fluid velocity and porosity at the grain centre; the drag law (a function
+ * pointer, evaluated with the grain's *current* velocity at every force
+ * evaluation, METHODS.md A.8 [P]) turns them into a force; after the advance
+ * dem_mean_drag() returns the drag averaged over the interval, for the
+ * reaction force of eq. (36).
+ */
+#ifndef MPSDEM_DEM_DEM_H
+#define MPSDEM_DEM_DEM_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+#include "dem/contact/contact.h"
+#include "dem/neighbour/nlist.h"
+#include "dem/walls/wall.h"
+
+#define DEM_MAX_PATCHES 64
+
+/* Drag law supplied by the coupling: for grains 0..n-1 with radius r, velocity
+ * v (3n), fluid velocity uf (3n) and porosity eps (n), write the drag force
+ * fd (3n) [N]. Non-zero return: error code (error.h). */
+typedef int (*dem_drag_fn)(void *ctx, size_t n, const double *r,
+                           const double *v, const double *uf,
+                           const double *eps, double *fd);
+
+struct dem_coupling {
+    const double *fext;   /* 3n external force [N], or NULL            */
+    const double *uf;     /* 3n fluid velocity [m/s], or NULL          */
+    const double *eps;    /* n porosity, or NULL                       */
+    dem_drag_fn drag;     /* NULL: no drag                             */
+    void *drag_ctx;
+    double *fd;           /* 3n drag at the last force evaluation      */
+    double *fd_sum;       /* 3n time integral of the applied drag [N s]*/
+    double sum_time;      /* length of the integral [s]                */
+};
+
+struct dem_stats {
+    long steps;           /* accepted steps                            */
+    long rejected;        /* rejected steps (error test failures)      */
+    long stab_limited;    /* steps limited by the stability bound      */
+    long fevals;          /* force evaluations (integrator stages)     */
+    long hist_evals;      /* extra evaluations to commit histories     */
+    long rebuilds;        /* neighbour-list builds                     */
+    long removed;         /* grains removed (left the domain)          */
+};
+
+struct dem {
+    /* grains */
+    size_t n, cap;
+    double *x, *v, *w;            /* 3n position [m], velocity, spin [rad/s] */
+    double *r, *m, *inv_m, *inv_i;/* radius, mass, 1/m, 1/I (I = 2/5 m R^2)  */
+    int32_t *group;
+    int64_t *id;
+    double *acc, *alpha;          /* 3n scratch: accelerations at last eval  */
+    /* physics */
+    double gravity[3];
+    struct contact_law law;
+    struct dem_wall *walls;
+    int nwalls;
+    int npatches;
+    char patch_names[DEM_MAX_PATCHES][64];
+    double patch_force[3 * DEM_MAX_PATCHES]; /* force ON each patch [N]    */
+    /* domain: grains outside [lo, hi] are counted (and removed if asked) */
+    int have_domain, remove_outside;
+    double dom_lo[3], dom_hi[3];
+    /* neighbours and contact history */
+    struct dem_nlist nl;
+    double *hist, *hnew;          /* 3 per candidate pair                   */
+    size_t hist_cap;
+    double *whist, *whnew;        /* 3 per grain and wall                   */
+    size_t whist_cap;
+    double *tbuf;                 /* per-thread force/torque accumulation   */
+    size_t tbuf_cap;
+    /* results of the last force evaluation */
+    double omega2_max;            /* max kn/m* over active contacts [1/s^2] */
+    long ncontacts, nwall_contacts;
+    double rmin, rmax;
+    double dt_rayleigh;           /* eq. (38) for rmin [s]                  */
+    /* time and book-keeping */
+    double t;
+    struct dem_coupling cpl;
+    struct dem_stats stats;
+};
+
+void dem_init(struct dem *d);
+void dem_free(struct dem *d);
+
+/* Make room for n grains (keeps the first min(n, old n)). */
+int dem_resize(struct dem *d, size_t n);
+
+/* After x, v, w, r (and id/group) are set: masses from rho, derived
+ * constants, the Rayleigh step, a fresh neighbour list (keeping histories
+ * only if ids are unchanged is the caller's business: this clears them). */
+int dem_setup(struct dem *d);
+
+/* Force evaluation at state (x, v, w) at time t, tau = t - t_accepted for
+ * the tangential springs. Writes accelerations acc (3n) and angular
+ * accelerations alpha (3n); new histories into hnew/whnew; patch forces;
+ * omega2_max. The neighbour list must be valid for x. */
+int dem_forces(struct dem *d, double t, const double *x, const double *v,
+               const double *w, double tau, double *acc, double *alpha);
+
+/* Accept the histories of the last force evaluation (hnew -> hist). */
+void dem_commit_history(struct dem *d);
+
+/* Rebuild the neighbour list if x moved more than skin/2 since the last
+ * build; histories follow their pairs. Returns SIM_OK. */
+int dem_update_neighbours(struct dem *d, const double *x);
+
+/* Overlap statistics for the start-up check: number of pairs (and wall
+ * contacts) overlapping by more than frac of the smaller radius, and the
+ * largest relative overlap. */
+void dem_overlap_stats(struct dem *d, double frac, long *count,
+                       double *max_rel);
+
+/* Count grains outside the domain and, if d->remove_outside, remove them
+ * (histories of remaining pairs are kept). Returns the number outside. */
+long dem_check_domain(struct dem *d);
+
+/* Contact step limits: Rayleigh step (eq. 38) and 2/omega of the stiffest
+ * contact at the last evaluation; 0 when no contact is active. */
+double dem_contact_step(const struct dem *d);
+
+/* Total kinetic energy, translation + rotation [J]. */
+double dem_kinetic_energy(const struct dem *d);
+
+/* Coupling: drag averaged over the last advance (3n) into fd; returns the
+ * averaging time. Resets the accumulator. */
+double dem_mean_drag(struct dem *d, double *fd);
+
+/* Add the drag and external forces of grains to acc (used by dem_forces). */
+
+#endif

@@ -1,0 +1,197 @@
+/*
+ * dem_forces.c — one force evaluation: contact forces and moments of all
+ * grain pairs and grain-wall contacts, gravity, external and drag forces,
+ * turned into accelerations (METHODS.md A.6, eqs. 17-18):
+ *
+ *   m_k dv_k/dt = sum_l F^C_kl + m_k g + F^ext_k + F^d_k(v_k)
+ *   I_k dw_k/dt = sum_l (R_k n_kl x F^t_kl + M^r_kl),   I_k = (2/5) m_k R_k^2
+ *
+ * Pairs come from the half neighbour list, so each contact is computed once
+ * and its force applied to both grains with opposite signs; with several
+ * OpenMP threads every thread accumulates into its own buffer (allocated
+ * once) and the buffers are summed per grain afterwards, so the result does
+ * not depend on a race. Wall contacts belong to one grain and need no
+ * buffer; the force a wall receives is summed per patch.
+ */
+#include <math.h>
+#include <omp.h>
+#include <string.h>
+
+#include "core/error.h"
+#include "dem/dem.h"
+
+static inline void cross3(const double *a, const double *b, double *c)
+{
+    c[0] = a[1] * b[2] - a[2] * b[1];
+    c[1] = a[2] * b[0] - a[0] * b[2];
+    c[2] = a[0] * b[1] - a[1] * b[0];
+}
+
+/* Relative velocity terms of a contact with normal n (k -> l); vl, wl and
+ * rl are zero for a wall. */
+static inline void fill_kinematics(struct contact_geom *g, const double *vk,
+                                   const double *wk, double rk,
+                                   const double *vl, const double *wl,
+                                   double rl)
+{
+    double s[3], rw[3], vr[3];
+    for (int a = 0; a < 3; a++)
+        s[a] = rk * wk[a] + (wl ? rl * wl[a] : 0.0);
+    cross3(s, g->n, rw);
+    for (int a = 0; a < 3; a++)
+        vr[a] = vk[a] - (vl ? vl[a] : 0.0) + rw[a];
+    g->vn = vr[0] * g->n[0] + vr[1] * g->n[1] + vr[2] * g->n[2];
+    for (int a = 0; a < 3; a++) {
+        g->vt[a] = vr[a] - g->vn * g->n[a];
+        g->wrel[a] = wk[a] - (wl ? wl[a] : 0.0);
+    }
+}
+
+static int reserve_buffers(struct dem *d, int nth)
+{
+    size_t need = (size_t)nth * (6 * d->n + 3 * DEM_MAX_PATCHES);
+    if (need > d->tbuf_cap) {
+        double *b = sim_realloc(d->tbuf, need * sizeof *b);
+        if (!b)
+            return SIM_ERR_NOMEM;
+        d->tbuf = b;
+        d->tbuf_cap = need;
+    }
+    return SIM_OK;
+}
+
+/* Pair contacts of grain i into f/t (force, torque buffers of 3n). */
+static void pair_row(struct dem *d, size_t i, const double *x, const double *v,
+                     const double *w, double tau, double *f, double *t,
+                     long *nc, double *om2)
+{
+    for (size_t p = d->nl.start[i]; p < d->nl.start[i + 1]; p++) {
+        size_t j = d->nl.j[p];
+        struct contact_geom g;
+        double dx[3], d2 = 0;
+        for (int a = 0; a < 3; a++) {
+            dx[a] = x[3 * j + a] - x[3 * i + a];
+            d2 += dx[a] * dx[a];
+        }
+        double rs = d->r[i] + d->r[j];
+        if (d2 >= rs * rs) {
+            d->hnew[3 * p] = d->hnew[3 * p + 1] = d->hnew[3 * p + 2] = 0;
+            continue;
+        }
+        double dist = sqrt(d2);
+        for (int a = 0; a < 3; a++)
+            g.n[a] = dx[a] / dist;
+        g.delta = rs - dist;
+        g.rstar = d->r[i] * d->r[j] / rs;
+        g.mstar = d->m[i] * d->m[j] / (d->m[i] + d->m[j]);
+        fill_kinematics(&g, &v[3 * i], &w[3 * i], d->r[i], &v[3 * j],
+                        &w[3 * j], d->r[j]);
+        struct contact_result res;
+        contact_eval(&d->law, &g, &d->hist[3 * p], tau, &d->hnew[3 * p], &res);
+        double tc[3];
+        cross3(g.n, res.ft, tc);
+        for (int a = 0; a < 3; a++) {
+            f[3 * i + a] += res.f[a];
+            f[3 * j + a] -= res.f[a];
+            t[3 * i + a] += d->r[i] * tc[a] + res.mroll[a];
+            t[3 * j + a] += d->r[j] * tc[a] - res.mroll[a];
+        }
+        (*nc)++;
+        *om2 = fmax(*om2, res.kn / g.mstar);
+    }
+}
+
+/* Wall contacts of grain i; pf: per-patch force received by the walls. */
+static void wall_row(struct dem *d, size_t i, const double *x, const double *v,
+                     const double *w, double tau, double *f, double *t,
+                     double *pf, long *nc, double *om2)
+{
+    for (int wl = 0; wl < d->nwalls; wl++) {
+        size_t hk = 3 * (i * (size_t)d->nwalls + (size_t)wl);
+        struct contact_geom g;
+        if (!wall_contact(&d->walls[wl], &x[3 * i], d->r[i], g.n, &g.delta)) {
+            d->whnew[hk] = d->whnew[hk + 1] = d->whnew[hk + 2] = 0;
+            continue;
+        }
+        g.rstar = d->r[i];
+        g.mstar = d->m[i];
+        fill_kinematics(&g, &v[3 * i], &w[3 * i], d->r[i], NULL, NULL, 0);
+        struct contact_result res;
+        contact_eval(&d->law, &g, &d->whist[hk], tau, &d->whnew[hk], &res);
+        double tc[3];
+        cross3(g.n, res.ft, tc);
+        int pa = d->walls[wl].patch;
+        for (int a = 0; a < 3; a++) {
+            f[3 * i + a] += res.f[a];
+            t[3 * i + a] += d->r[i] * tc[a] + res.mroll[a];
+            pf[3 * pa + a] -= res.f[a];
+        }
+        (*nc)++;
+        *om2 = fmax(*om2, res.kn / g.mstar);
+    }
+}
+
+/* Gravity, external force and drag; contact sums in f, t. */
+static int finish(struct dem *d, const double *v, const double *f,
+                  const double *t, double *acc, double *alpha)
+{
+    struct dem_coupling *c = &d->cpl;
+    if (c->drag && c->uf && c->eps) {
+        int rc = c->drag(c->drag_ctx, d->n, d->r, v, c->uf, c->eps, c->fd);
+        if (rc != SIM_OK)
+            return rc;
+    }
+    int drag = c->drag && c->uf && c->eps;
+    #pragma omp parallel for schedule(static)
+    for (size_t i = 0; i < d->n; i++)
+        for (int a = 0; a < 3; a++) {
+            size_t k = 3 * i + a;
+            double fk = f[k] + (c->fext ? c->fext[k] : 0.0)
+                        + (drag ? c->fd[k] : 0.0);
+            acc[k] = fk * d->inv_m[i] + d->gravity[a];
+            alpha[k] = t[k] * d->inv_i[i];
+        }
+    return SIM_OK;
+}
+
+int dem_forces(struct dem *d, double tm, const double *x, const double *v,
+               const double *w, double tau, double *acc, double *alpha)
+{
+    (void)tm;
+    int nth = omp_get_max_threads();
+    size_t n = d->n, stride = 6 * n + 3 * DEM_MAX_PATCHES;
+    TRY(reserve_buffers(d, nth));
+    long nc = 0, nwc = 0;
+    double om2 = 0;
+    int team = 1;
+    #pragma omp parallel num_threads(nth) reduction(+ : nc, nwc) \
+        reduction(max : om2)
+    {
+        double *f = d->tbuf + (size_t)omp_get_thread_num() * stride;
+        double *t = f + 3 * n, *pf = t + 3 * n;
+        memset(f, 0, stride * sizeof *f);
+        #pragma omp single
+        team = omp_get_num_threads();
+        #pragma omp for schedule(dynamic, 256) nowait
+        for (size_t i = 0; i < n; i++) {
+            pair_row(d, i, x, v, w, tau, f, t, &nc, &om2);
+            wall_row(d, i, x, v, w, tau, f, t, pf, &nwc, &om2);
+        }
+        #pragma omp barrier
+        #pragma omp for schedule(static)
+        for (size_t k = 0; k < 6 * n; k++)
+            for (int th = 1; th < team; th++)
+                d->tbuf[k] += d->tbuf[(size_t)th * stride + k];
+    }
+    for (int p = 0; p < 3 * DEM_MAX_PATCHES; p++) {
+        double s = 0;
+        for (int th = 0; th < team; th++)
+            s += d->tbuf[(size_t)th * stride + 6 * n + p];
+        d->patch_force[p] = s;
+    }
+    d->ncontacts = nc;
+    d->nwall_contacts = nwc;
+    d->omega2_max = om2;
+    d->stats.fevals++;
+    return finish(d, v, d->tbuf, d->tbuf + 3 * n, acc, alpha);
+}

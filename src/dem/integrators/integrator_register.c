@@ -1,0 +1,7 @@
+/* integrator_register.c — the list of DEM integrators (STYLE.md C3). */
+#include <stddef.h>
+
+#include "dem/integrators/integrator.h"
+
+const struct dem_integrator_ops *const dem_integrator_table[] = {
+    &dem_integrator_arkode, &dem_integrator_verlet, NULL};
