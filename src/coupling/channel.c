@@ -464,7 +464,9 @@ int channel_close(struct channel *c, int status)
         while (flock(c->fd, LOCK_EX | LOCK_NB) != 0 &&
                chan_now_ns() < deadline)
             nanosleep(&(struct timespec){ 0, 1000000 }, NULL);
-        if (!chan_side_alive(c->hdr, c->peer) && name_is_ours(c) &&
+        /* a hung peer that resumes finds us FAILED and needs no name */
+        if ((c->peer_hung || !chan_side_alive(c->hdr, c->peer)) &&
+            name_is_ours(c) &&
             shm_unlink(c->set.name) != 0 && errno != ENOENT)
             rc = sim_error(SIM_ERR_IO, "%s: cannot remove channel %s: %s",
                            c->set.program, c->set.name, strerror(errno));

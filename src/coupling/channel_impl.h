@@ -95,6 +95,7 @@ struct channel {
     pid_t peer_pid;
     char peer_program[64];
     uint64_t hung_ns;           /* heartbeat silence that means "hung"     */
+    int peer_hung;              /* we gave up on a live but silent peer    */
     /* frame reserved by send_begin, waiting for commit */
     struct channel_frame *pending;
     /* frame exposed by recv, waiting for recv_done */

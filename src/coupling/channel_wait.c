@@ -122,11 +122,13 @@ int chan_check_peer(struct channel *c)
                              "crashed)", c->set.program, c->peer_program,
                              (int)c->peer_pid);
         uint64_t beat = atomic_load(&p->heartbeat_ns), now = chan_now_ns();
-        if (beat && now > beat && now - beat > c->hung_ns)
+        if (beat && now > beat && now - beat > c->hung_ns) {
+            c->peer_hung = 1;
             return sim_error(SIM_ERR_PEER, "%s: peer %s (pid %d) sent no "
                              "heartbeat for %.1f s: it is stopped or hung",
                              c->set.program, c->peer_program,
                              (int)c->peer_pid, (double)(now - beat) * 1e-9);
+        }
     }
     return SIM_OK;
 }
