@@ -6,24 +6,47 @@
  *
  * with L the strictly lower triangle of A itself, so that diag(M) = diag(A).
  * Pommerell (1992) / OpenFOAM's DIC preconditioner; Meijerink & van der Vorst
- * (1977) for existence on M-matrices. Set-up costs one pass over A and no
- * factor storage; the solves read A's own rows, so its columns need not be
- * sorted. On a non-positive d_i we shift the diagonal as in precond_ic0.c.
+ * (1977) for existence on M-matrices. Set-up copies the strictly lower
+ * triangle (unsorted: DIC does not need sorted columns) and computes d in one
+ * pass; the backward solve runs over the same rows as columns of L^T, so A
+ * is never read again. On a non-positive d_i we shift the diagonal as in
+ * precond_ic0.c.
  */
 #include "core/error.h"
 #include "core/log.h"
 #include "linsolve/linsolve_impl.h"
 
-static int factor(struct precond *pc, const struct csr_matrix *A,
-                  const double *diag, double alpha)
+/* Strictly lower triangle of A into pc->fp/fc/fv, in A's column order. */
+static int copy_lower(struct precond *pc, const struct csr_matrix *A)
 {
-    for (int i = 0; i < A->n; i++) {
+    int n = A->n;
+    TRY(precond_reserve(pc, n, 0, 0));
+    pc->fp[0] = 0;
+    for (int i = 0; i < n; i++) {
+        int64_t c = 0;
+        for (int64_t k = A->rowptr[i]; k < A->rowptr[i + 1]; k++)
+            c += A->col[k] < i;
+        pc->fp[i + 1] = pc->fp[i] + c;
+    }
+    TRY(precond_reserve(pc, n, pc->fp[n], 1));
+#pragma omp parallel for schedule(static)
+    for (int i = 0; i < n; i++) {
+        int64_t o = pc->fp[i];
+        for (int64_t k = A->rowptr[i]; k < A->rowptr[i + 1]; k++)
+            if (A->col[k] < i) {
+                pc->fc[o] = A->col[k];
+                pc->fv[o++] = A->val[k];
+            }
+    }
+    return SIM_OK;
+}
+
+static int factor(struct precond *pc, const double *diag, double alpha)
+{
+    for (int i = 0; i < pc->n; i++) {
         double s = diag[i] * (1.0 + alpha);
-        for (int64_t k = A->rowptr[i]; k < A->rowptr[i + 1]; k++) {
-            int j = A->col[k];
-            if (j < i)
-                s -= A->val[k] * A->val[k] * pc->dinv[j];
-        }
+        for (int64_t k = pc->fp[i]; k < pc->fp[i + 1]; k++)
+            s -= pc->fv[k] * pc->fv[k] * pc->dinv[pc->fc[k]];
         if (!(s > 1e-14 * diag[i]))
             return i;
         pc->dinv[i] = 1.0 / s;
@@ -34,12 +57,11 @@ static int factor(struct precond *pc, const struct csr_matrix *A,
 static int setup(struct precond *pc, const struct csr_matrix *A,
                  const double *diag)
 {
-    TRY(precond_reserve(pc, A->n, 0, 0));
-    pc->A = A;
+    TRY(copy_lower(pc, A));
     double alpha = 0.0;
     int first = -1;
     for (int attempt = 0; attempt < 30; attempt++) {
-        int row = factor(pc, A, diag, alpha);
+        int row = factor(pc, diag, alpha);
         if (row < 0) {
             pc->shift = alpha;
             if (alpha > 0.0)
@@ -58,22 +80,24 @@ static int setup(struct precond *pc, const struct csr_matrix *A,
 
 static void apply(const struct precond *pc, const double *r, double *z)
 {
-    const struct csr_matrix *A = pc->A;
+    const int64_t *fp = pc->fp;
+    const int32_t *fc = pc->fc;
+    const double *fv = pc->fv, *dinv = pc->dinv;
     double *y = pc->y;
-    for (int i = 0; i < A->n; i++) {
+    for (int i = 0; i < pc->n; i++) {
         double s = r[i];
-        for (int64_t k = A->rowptr[i]; k < A->rowptr[i + 1]; k++)
-            if (A->col[k] < i)
-                s -= A->val[k] * y[A->col[k]];
-        y[i] = s * pc->dinv[i];
+        for (int64_t k = fp[i]; k < fp[i + 1]; k++)
+            s -= fv[k] * y[fc[k]];
+        y[i] = s * dinv[i];
     }
-    /* (D + L^T) z = D y, with L^T's row i = the upper part of A's row i. */
-    for (int i = A->n - 1; i >= 0; i--) {
-        double s = 0.0;
-        for (int64_t k = A->rowptr[i]; k < A->rowptr[i + 1]; k++)
-            if (A->col[k] > i)
-                s += A->val[k] * z[A->col[k]];
-        z[i] = y[i] - s * pc->dinv[i];
+    /* (D + L^T) z = D y, i.e. z_i = y_i - sum_{j>i} a_ji z_j / d_i, by
+     * columns of L^T (= rows of L), last first: once z_i is known it is
+     * removed from the equations c < i it appears in. */
+    for (int i = pc->n - 1; i >= 0; i--) {
+        double zi = y[i];
+        z[i] = zi;
+        for (int64_t k = fp[i]; k < fp[i + 1]; k++)
+            y[fc[k]] -= fv[k] * zi * dinv[fc[k]];
     }
 }
 
