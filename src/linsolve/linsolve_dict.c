@@ -58,7 +58,8 @@ int linsolve_create(const struct dict *d, struct linsolve **out)
                                    (int)maxiter, out);
     if (rc != SIM_OK) {
         snprintf(msg, sizeof msg, "%s", sim_error_message());
-        return dict_error(d, "solver", rc, "%s", msg);
+        return dict_error(d, "solver",
+                          rc == SIM_ERR_INPUT ? SIM_ERR_DICT : rc, "%s", msg);
     }
     (*out)->warm_start = warm;
     return SIM_OK;
