@@ -328,7 +328,7 @@ int dict_set_in_file(const char *path, const char *keypath, const char *value)
     int err = dict_slurp(path, &text, &len);
     if (err) {
         rc = sim_error(SIM_ERR_IO, "cannot open '%s': %s", path,
-                       strerror(err));
+                       dict_strerror(err));
         goto out;
     }
     TRY_GOTO(rc, dict_read_string(text, len, path, &d), out);

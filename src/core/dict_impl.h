@@ -148,8 +148,11 @@ char *dict_value_to_text(const struct dict_value *v);
 /* Write d's entries at the given indent (dict_write.c). */
 int dict_write_body(const struct dict *d, FILE *f, int indent);
 
-/* Whole file into a malloc'd NUL-terminated buffer; 0 or an errno. */
+/* Whole regular file into a malloc'd NUL-terminated buffer; 0, an errno,
+ * or DICT_ENOTREG (devices and FIFOs could block or never end). */
+#define DICT_ENOTREG (-1)
 int dict_slurp(const char *path, char **text, size_t *len);
+const char *dict_strerror(int err);
 /* Write text to path via a temporary file and rename(); with mkparent the
  * parent directories are created. Keeps an existing file's mode. */
 int dict_write_atomic(const char *path, const char *text, size_t len,

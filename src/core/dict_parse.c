@@ -480,16 +480,26 @@ static int parse_entry(struct parser *p, struct dict *d, const struct token *kt,
 
 /* ---- files and #include ------------------------------------------------- */
 
+const char *dict_strerror(int err)
+{
+    return err == DICT_ENOTREG ? "not a regular file" : strerror(err);
+}
+
 int dict_slurp(const char *path, char **text, size_t *len)
 {
-    int fd = open(path, O_RDONLY);
+    int fd = open(path, O_RDONLY | O_NONBLOCK); /* a FIFO must not block */
     if (fd < 0)
         return errno;
     struct stat st;
-    if (fstat(fd, &st) != 0 || S_ISDIR(st.st_mode)) {
-        int err = S_ISDIR(st.st_mode) ? EISDIR : errno;
+    /* only regular files: "#include \"/dev/zero\"" must not hang */
+    if (fstat(fd, &st) != 0) {
+        int err = errno;
         close(fd);
         return err;
+    }
+    if (!S_ISREG(st.st_mode)) {
+        close(fd);
+        return S_ISDIR(st.st_mode) ? EISDIR : DICT_ENOTREG;
     }
     size_t cap = st.st_size > 0 ? (size_t)st.st_size + 1 : 4096, n = 0;
     char *buf = malloc(cap);
@@ -599,7 +609,8 @@ static int parse_include(struct parser *p, struct dict *d, const struct token *t
         char where[64];
         snprintf(where, sizeof where, "%d:%d", f.line, f.col);
         return sim_error(SIM_ERR_IO, "%s:%s: cannot open included file "
-                         "'%s': %s", p->lx->file, where, path, strerror(err));
+                         "'%s': %s", p->lx->file, where, path,
+                         dict_strerror(err));
     }
     char *canon = realpath(path, NULL);
     int rc = canon ? include_cycle(p, t, canon, path) : SIM_OK;
@@ -695,7 +706,7 @@ int dict_read(const char *path, struct dict **out)
     int err = dict_slurp(path, &text, &len);
     if (err)
         return sim_error(SIM_ERR_IO, "cannot open '%s': %s", path,
-                         strerror(err));
+                         dict_strerror(err));
     int rc = dict_read_string(text, len, path, out);
     free(text);
     return rc;

@@ -12,7 +12,8 @@
  *
  * TYPE for -check: scalar, label, bool, string, dict, list, vector:N,
  * dims:E1,...,E7 (a scalar with that dimension set), word:a,b,c (one of
- * these words) and model:a,b,c (selection through model_select).
+ * these words) and model:a,b,c (selection through model_select); scalar?,
+ * label?, bool?, string? and dict? read an optional key (with a default).
  *
  * FILE is relative to the case directory. Errors print a FATAL ERROR with
  * the file and line on stderr and exit 1; the file is never modified then.
@@ -127,6 +128,37 @@ static int check_model(const struct dict *d, const char *key, char *list)
     return SIM_OK;
 }
 
+/* KEY:TYPE? reads KEY with the _or getter, as a program with a default. */
+static int check_optional(const struct dict *d, const char *key,
+                          const char *type, const char *spec)
+{
+    if (strcmp(type, "scalar") == 0) {
+        double x;
+        TRY(dict_get_scalar_or(d, key, 0.0, &x));
+        printf("%s %.17g\n", key, x);
+    } else if (strcmp(type, "label") == 0) {
+        long x;
+        TRY(dict_get_label_or(d, key, 0, &x));
+        printf("%s %ld\n", key, x);
+    } else if (strcmp(type, "bool") == 0) {
+        int x;
+        TRY(dict_get_bool_or(d, key, 0, &x));
+        printf("%s %s\n", key, x ? "true" : "false");
+    } else if (strcmp(type, "string") == 0) {
+        const char *s;
+        TRY(dict_get_string_or(d, key, "", &s));
+        printf("%s %s\n", key, s);
+    } else if (strcmp(type, "dict") == 0) {
+        const struct dict *sub;
+        TRY(dict_find_dict(d, key, &sub));
+        printf("%s %s\n", key, sub ? "{ ... }" : "absent");
+    } else {
+        return sim_error(SIM_ERR_INPUT, "-check '%s': an optional TYPE? is "
+                         "one of scalar? label? bool? string? dict?", spec);
+    }
+    return SIM_OK;
+}
+
 static int check_one(const struct dict *d, const char *spec)
 {
     char buf[1024];
@@ -140,6 +172,11 @@ static int check_one(const struct dict *d, const char *spec)
     char *arg = strchr(type, ':');
     if (arg)
         *arg++ = '\0';
+    size_t nt = strlen(type);
+    if (nt && type[nt - 1] == '?') { /* optional: read with a default */
+        type[nt - 1] = '\0';
+        return check_optional(d, key, type, spec);
+    }
     if (strcmp(type, "scalar") == 0) {
         double x;
         TRY(dict_get_scalar(d, key, &x));

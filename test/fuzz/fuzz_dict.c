@@ -1,0 +1,105 @@
+/*
+ * fuzz_dict.c — libFuzzer target for the dictionary library.
+ *
+ * Any input must either parse or fail with a located message, never crash,
+ * hang or leak. Whatever parses is expanded, parsed again and expanded
+ * again: the two texts must be equal (dict_write_expanded's promise), and
+ * the getters are exercised on the first entries with every type.
+ * Build and run with test/fuzz/run.
+ */
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "core/dict.h"
+#include "core/error.h"
+#include "core/log.h"
+
+static char *expand(const struct dict *d, size_t *len)
+{
+    char *buf = NULL;
+    FILE *f = open_memstream(&buf, len);
+    if (!f)
+        abort();
+    if (dict_write_expanded(d, f) != SIM_OK)
+        abort();
+    fclose(f);
+    return buf;
+}
+
+static void poke(const struct dict *d, int depth)
+{
+    static const char *const words[] = { "yes", "no", "ascii", NULL };
+    for (int i = 0; i < dict_size(d) && i < 8; i++) {
+        const char *k = dict_key_at(d, i);
+        double x, v[3];
+        long l;
+        int b, w;
+        const char *s;
+        const struct dict *sub;
+        const struct dict_value *val;
+        int dims[7] = { 0, 2, -1, 0, 0, 0, 0 };
+        char where[256];
+        dict_get_scalar(d, k, &x);
+        dict_get_scalar_dim(d, k, dims, &x);
+        dict_get_label(d, k, &l);
+        dict_get_bool(d, k, &b);
+        dict_get_word(d, k, words, &w);
+        dict_get_string(d, k, &s);
+        dict_get_vector(d, k, 3, v);
+        dict_get_list(d, k, &val);
+        dict_where(d, k, where, sizeof where);
+        if (dict_get_value(d, k, &val) == SIM_OK) {
+            dict_value_where(val, where, sizeof where);
+            for (int j = 0; j < dict_value_len(val) && j < 4; j++) {
+                const struct dict_value *it = dict_value_at(val, j);
+                dict_value_get_scalar(it, &x);
+                dict_value_get_vector(it, 3, v);
+                dict_value_get_word(it, &s);
+                if (dict_value_kind(it) == DICT_DICT && depth < 4)
+                    poke(dict_value_dict(it), depth + 1);
+            }
+        }
+        if (depth < 4 && dict_find_dict(d, k, &sub) == SIM_OK && sub)
+            poke(sub, depth + 1);
+        sim_error_clear();
+    }
+    dict_get_scalar_or(d, "notThere", 1.0, &(double){ 0 });
+    dict_get_label(d, "a/b/c", &(long){ 0 });
+    sim_error_clear();
+}
+
+int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
+{
+    struct dict *d, *d2;
+    log_set_quiet(1);
+    if (dict_read_string((const char *)data, size, "fuzz/input", &d)
+        != SIM_OK) {
+        if (sim_error_message()[0] == '\0')
+            abort(); /* every failure must say why */
+        sim_error_clear();
+        return 0;
+    }
+    size_t n1, n2;
+    char *t1 = expand(d, &n1);
+    if (dict_read_string(t1, n1, "fuzz/expanded", &d2) != SIM_OK) {
+        fprintf(stderr, "expanded text does not parse: %s\n%s\n",
+                sim_error_message(), t1);
+        abort();
+    }
+    char *t2 = expand(d2, &n2);
+    if (n1 != n2 || memcmp(t1, t2, n1) != 0) {
+        fprintf(stderr, "expansion is not a fixed point:\n%s\n---\n%s\n", t1,
+                t2);
+        abort();
+    }
+    poke(d, 0);
+    dict_warn_unused(d);
+    free(t1);
+    free(t2);
+    dict_free(d2);
+    dict_free(d);
+    params_clear();
+    return 0;
+}
