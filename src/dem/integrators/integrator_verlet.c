@@ -61,13 +61,16 @@ static void drift(struct dem *d, double h)
         d->x[k] += h * d->v[k];
 }
 
-static void accumulate_drag(struct dem *d, double h)
+/* Half of the trapezoid rule for the applied drag impulse: Verlet applies
+ * dt/2 (F_n + F_{n+1}), so summing both halves makes the averaged drag
+ * balance the momentum exactly (what eq. 36 needs). */
+static void accumulate_drag(struct dem *d, double h, double time_part)
 {
     if (!d->cpl.drag)
         return;
     for (size_t k = 0; k < 3 * d->n; k++)
-        d->cpl.fd_sum[k] += h * d->cpl.fd[k];
-    d->cpl.sum_time += h;
+        d->cpl.fd_sum[k] += 0.5 * h * d->cpl.fd[k];
+    d->cpl.sum_time += time_part;
 }
 
 static int verlet_advance(void *ctx, struct dem *d, double t_end)
@@ -85,12 +88,13 @@ static int verlet_advance(void *ctx, struct dem *d, double t_end)
     for (long s = 0; s < nsteps; s++) {
         double tn = s + 1 == nsteps ? t_end : d->t + h;
         half_kick(d, 0.5 * h);
+        accumulate_drag(d, h, 0.0);
         drift(d, h);
         TRY(dem_update_neighbours(d, d->x));
         TRY(dem_forces(d, tn, d->x, d->v, d->w, h, d->acc, d->alpha));
         half_kick(d, 0.5 * h);
         dem_commit_history(d);
-        accumulate_drag(d, h);
+        accumulate_drag(d, h, h);
         d->t = tn;
         d->stats.steps++;
     }

@@ -1,34 +1,25 @@
 /*
- * wall.h — analytic walls for DEM grains: planes, boxes (grains inside: a
- * tank; grains outside: an obstacle) and finite cylinders (inside or
- * outside). A wall belongs to a named patch, which accumulates the contact
- * force it receives (the "load of solids on the obstacle", METHODS.md A.9).
+ * wall.h — analytic walls for DEM grains, built on the geometry primitives
+ * of src/particles/geometry.h (the same solids genParticles uses for the
+ * fluid's walls), so that fluid and grains see one geometry.
  *
- * A box-inside wall is expanded into its six planes at set-up so that a
- * grain in a corner has one contact (and one tangential history) per face.
- * Every other wall gives at most one contact per grain (closest point on a
- * convex solid).
- *
- * TODO(geometry): the geometry primitives of src/particles/geometry.h were
- * not available when this was written; these few closest-point functions
- * stand in for them and should call them once they exist.
+ * A wall is a solid and a side: grains stay outside it (an obstacle, a
+ * half-space floor) or inside it (a cylindrical tank). A box tank is
+ * expanded at set-up into its six half-spaces so that a grain in a corner
+ * has one contact, and one tangential history, per face. Every other wall
+ * gives at most one contact per grain (closest surface point). A wall
+ * belongs to a named patch, which sums the contact force it receives
+ * (METHODS.md A.9, "load of solids on a structure").
  */
 #ifndef MPSDEM_DEM_WALL_H
 #define MPSDEM_DEM_WALL_H
 
-enum dem_wall_kind {
-    DEM_WALL_PLANE,        /* p: point on plane, u: unit normal into the domain */
-    DEM_WALL_BOX_OUTSIDE,  /* lo, hi: corners; grains stay outside            */
-    DEM_WALL_CYL_OUTSIDE,  /* p: axis start, u: unit axis, len, radius        */
-    DEM_WALL_CYL_INSIDE    /* same, grains stay inside the (infinite) tube    */
-};
+#include "particles/geometry.h"
 
 struct dem_wall {
-    enum dem_wall_kind kind;
-    double p[3], u[3];
-    double lo[3], hi[3];
-    double len, radius;
-    int patch;             /* index into the patch names                    */
+    struct geom g;
+    int inside;   /* 1: grains inside the solid (a tank), 0: outside */
+    int patch;    /* index into the patch names                      */
 };
 
 /* Contact of a sphere (centre x, radius r) with w. Returns 1 and sets the
@@ -37,12 +28,17 @@ struct dem_wall {
 int wall_contact(const struct dem_wall *w, const double x[3], double r,
                  double n[3], double *delta);
 
-/* Signed distance from x to the wall surface, positive on the grain side. */
+/* Distance from x to the wall surface, positive on the grain side. */
 double wall_distance(const struct dem_wall *w, const double x[3]);
 
-/* Append the six inward planes of the box [lo, hi] (a tank) to walls;
- * returns the new count. walls must have room for six more. */
-int wall_add_box_inside(struct dem_wall *walls, int nwalls, const double lo[3],
-                        const double hi[3], int patch);
+/* Append the 2*dim faces of the box tank [lo, hi] (grains inside) as
+ * half-spaces to walls, counting them in *nwalls (room for six needed). */
+int wall_add_box_inside(struct dem_wall *walls, int *nwalls, int dim,
+                        const double lo[3], const double hi[3], int patch);
+
+/* A half-space wall through point p with the unit normal u pointing to the
+ * grains (a floor: u = (0 0 1)). */
+int wall_plane(struct dem_wall *w, int dim, const double p[3],
+               const double u[3], int patch);
 
 #endif

@@ -52,12 +52,9 @@ static inline int th_grains(struct dem *d, size_t n)
 
 static inline void th_floor(struct dem *d)
 {
-    static struct dem_wall floor_wall;
-    floor_wall = (struct dem_wall){.kind = DEM_WALL_PLANE, .u = {0, 0, 1},
-                                   .patch = 0};
-    d->walls = NULL;
-    d->walls = malloc(sizeof floor_wall);
-    d->walls[0] = floor_wall;
+    const double p[3] = {0, 0, 0}, u[3] = {0, 0, 1};
+    d->walls = malloc(sizeof *d->walls);
+    wall_plane(&d->walls[0], 3, p, u, 0);
     d->nwalls = 1;
     d->npatches = 1;
     strcpy(d->patch_names[0], "floor");

@@ -1,0 +1,242 @@
+/*
+ * test_integrators.c — the ARKode ERKStep integrator against the Verlet
+ * reference and against exact solutions:
+ *   - free flight is exact and takes few steps (the point of adaptivity);
+ *   - a settling cluster of grains in a box: both integrators agree;
+ *   - sliding to rolling (E2-06): t* = 2 v0/(7 mu g), v = 5 v0/7 within 2 %;
+ *   - stop times are hit exactly; a fixed step above the Rayleigh bound is
+ *     refused with the bound;
+ *   - coupling: drag evaluated each sub-step with the current velocity, its
+ *     time average returned, momentum balance exact.
+ */
+#include <setjmp.h>
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdio.h>
+#include <stdlib.h>
+
+#include <cmocka.h>
+
+#include "dem_test_helpers.h"
+
+static double rel(double a, double b) { return fabs(a - b) / fabs(b); }
+
+static const struct dem_integrator_ops *const both[] = {
+    &dem_integrator_verlet, &dem_integrator_arkode};
+
+static void test_free_flight(void **state)
+{
+    (void)state;
+    struct dem d;
+    dem_init(&d);
+    assert_int_equal(th_law(&d, &contact_normal_hertz,
+                            &contact_damping_restitution,
+                            &contact_tangential_coulomb,
+                            &contact_rolling_none, T1_MU, 0.9), SIM_OK);
+    assert_int_equal(th_grains(&d, 1), SIM_OK);
+    d.v[0] = 1, d.v[2] = 3;
+    assert_int_equal(dem_setup(&d), SIM_OK);
+    struct dem_integrator_params p = th_params();
+    void *ctx;
+    assert_int_equal(dem_integrator_arkode.create(&d, &p, &ctx), SIM_OK);
+    for (int k = 1; k <= 4; k++)
+        assert_int_equal(dem_integrator_arkode.advance(ctx, &d, 0.25 * k),
+                         SIM_OK);
+    assert_true(d.t == 1.0);
+    assert_true(fabs(d.x[0] - 1.0) < 1e-12);
+    assert_true(fabs(d.x[2] - (3.0 - 0.5 * 9.81)) < 1e-12);
+    printf("  free flight 1 s: %ld steps, %ld force evaluations\n",
+           d.stats.steps, d.stats.fevals);
+    assert_true(d.stats.steps < 40);
+    dem_integrator_arkode.destroy(ctx);
+    dem_free(&d);
+}
+
+static void test_bad_step_refused(void **state)
+{
+    (void)state;
+    struct dem d;
+    dem_init(&d);
+    assert_int_equal(th_law(&d, &contact_normal_hertz,
+                            &contact_damping_restitution,
+                            &contact_tangential_coulomb,
+                            &contact_rolling_none, T1_MU, 0.9), SIM_OK);
+    assert_int_equal(th_grains(&d, 1), SIM_OK);
+    assert_int_equal(dem_setup(&d), SIM_OK);
+    struct dem_integrator_params p = th_params();
+    p.dt = 1e-4;
+    void *ctx;
+    assert_int_equal(dem_integrator_verlet.create(&d, &p, &ctx),
+                     SIM_ERR_INPUT);
+    assert_non_null(strstr(sim_error_message(), "3.61"));
+    p = th_params();
+    p.rtol = 0;
+    assert_int_equal(dem_integrator_arkode.create(&d, &p, &ctx),
+                     SIM_ERR_INPUT);
+    dem_free(&d);
+}
+
+/* 27 grains dropped in a small box: both integrators give the same final
+ * positions (a short, non-chaotic interval). */
+static void cluster(const struct dem_integrator_ops *ops, double *xout,
+                    struct dem_stats *st)
+{
+    struct dem d;
+    dem_init(&d);
+    assert_int_equal(th_law(&d, &contact_normal_hertz,
+                            &contact_damping_restitution,
+                            &contact_tangential_coulomb,
+                            &contact_rolling_none, T1_MU, 0.9), SIM_OK);
+    assert_int_equal(th_grains(&d, 27), SIM_OK);
+    for (int i = 0; i < 27; i++) {
+        d.x[3 * i] = 0.005 + 2.1 * T1_R * (i % 3) + 1e-5 * (i % 5);
+        d.x[3 * i + 1] = 0.005 + 2.1 * T1_R * ((i / 3) % 3);
+        d.x[3 * i + 2] = 1.05 * T1_R + 2.05 * T1_R * (i / 9);
+    }
+    d.walls = malloc(6 * sizeof *d.walls);
+    double lo[3] = {0, 0, 0}, hi[3] = {0.02, 0.02, 0.05};
+    assert_int_equal(wall_add_box_inside(d.walls, &d.nwalls, 3, lo, hi, 0),
+                     SIM_OK);
+    assert_int_equal(dem_setup(&d), SIM_OK);
+    struct dem_integrator_params p = th_params();
+    p.dt_fraction = 0.05;
+    p.rtol = 1e-9, p.atol_x = 1e-13, p.atol_v = 1e-10, p.atol_w = 1e-7;
+    void *ctx;
+    assert_int_equal(ops->create(&d, &p, &ctx), SIM_OK);
+    for (int k = 1; k <= 10; k++)
+        assert_int_equal(ops->advance(ctx, &d, 0.001 * k), SIM_OK);
+    memcpy(xout, d.x, 81 * sizeof *xout);
+    *st = d.stats;
+    ops->destroy(ctx);
+    dem_free(&d);
+}
+
+static void test_cluster_agreement(void **state)
+{
+    (void)state;
+    double xv[81], xa[81];
+    struct dem_stats sv, sa;
+    cluster(&dem_integrator_verlet, xv, &sv);
+    cluster(&dem_integrator_arkode, xa, &sa);
+    double err = 0;
+    for (int k = 0; k < 81; k++)
+        err = fmax(err, fabs(xv[k] - xa[k]));
+    printf("  27 grains, 10 ms: max |x_verlet - x_arkode| = %.2e m (%.2e R);"
+           " verlet %ld steps, arkode %ld steps (%ld rejected, %ld "
+           "stability-limited), %ld + %ld evaluations\n", err, err / T1_R,
+           sv.steps, sa.steps, sa.rejected, sa.stab_limited, sa.fevals,
+           sa.hist_evals);
+    assert_true(err < 1e-3 * T1_R);
+}
+
+/* E2-06: v0 = 1 m/s, w0 = 0 on the floor, mu = 0.2. */
+static void test_sliding_to_rolling(void **state)
+{
+    (void)state;
+    double v0 = 0.5, g = 9.81;
+    double tstar = 2 * v0 / (7 * T1_MU * g), vroll = 5 * v0 / 7;
+    for (int k = 0; k < 2; k++) {
+        struct dem d;
+        dem_init(&d);
+        assert_int_equal(th_law(&d, &contact_normal_hertz,
+                                &contact_damping_restitution,
+                                &contact_tangential_coulomb,
+                                &contact_rolling_none, T1_MU, 0.9), SIM_OK);
+        assert_int_equal(th_grains(&d, 1), SIM_OK);
+        th_floor(&d);
+        d.x[2] = T1_R - 2.14e-7;  /* static overlap */
+        d.v[0] = v0;
+        assert_int_equal(dem_setup(&d), SIM_OK);
+        struct dem_integrator_params p = th_params();
+        p.rtol = 1e-6;
+        p.dt_fraction = 0.2;
+        void *ctx;
+        assert_int_equal(both[k]->create(&d, &p, &ctx), SIM_OK);
+        double dto = 2e-4, t_roll = -1, prev_slip = v0;
+        for (int s = 1; s <= 450; s++) {
+            assert_int_equal(both[k]->advance(ctx, &d, s * dto), SIM_OK);
+            double slip = d.v[0] - T1_R * d.w[1];
+            if (t_roll < 0 && slip < 1e-3 * v0)
+                t_roll = d.t - dto * (slip - 1e-3 * v0) / (slip - prev_slip);
+            prev_slip = slip;
+        }
+        printf("  %s: t* = %.5f s (ref %.5f), v = %.5f m/s (ref %.5f); "
+               "%ld steps, %ld evaluations\n", both[k]->name, t_roll, tstar,
+               d.v[0], vroll, d.stats.steps, d.stats.fevals);
+        assert_true(rel(t_roll, tstar) < 0.02);
+        assert_true(rel(d.v[0], vroll) < 0.02);
+        both[k]->destroy(ctx);
+        dem_free(&d);
+    }
+}
+
+/* Linear drag F = c (u_f - v) toward a fluid at rest: the grain falls to
+ * the terminal velocity m g/c; the time-averaged drag returned satisfies
+ * m (v1 - v0) = (m g + <F_d>) T. */
+struct drag_ctx {
+    double c;
+    long calls;
+};
+
+static int linear_drag(void *ctx, size_t n, const double *r, const double *v,
+                       const double *uf, const double *eps, double *fd)
+{
+    struct drag_ctx *c = ctx;
+    (void)r, (void)eps;
+    for (size_t k = 0; k < 3 * n; k++)
+        fd[k] = c->c * (uf[k] - v[k]);
+    c->calls++;
+    return SIM_OK;
+}
+
+static void test_coupling_drag(void **state)
+{
+    (void)state;
+    for (int k = 0; k < 2; k++) {
+        struct dem d;
+        dem_init(&d);
+        assert_int_equal(th_law(&d, &contact_normal_hertz,
+                                &contact_damping_restitution,
+                                &contact_tangential_coulomb,
+                                &contact_rolling_none, T1_MU, 0.9), SIM_OK);
+        assert_int_equal(th_grains(&d, 1), SIM_OK);
+        assert_int_equal(dem_setup(&d), SIM_OK);
+        double uf[3] = {0, 0, 0}, eps = 1, fext[3] = {1e-5, 0, 0};
+        /* relaxation time m/c = 1 ms: much shorter than the interval */
+        struct drag_ctx dc = {.c = d.m[0] / 1e-3};
+        d.cpl = (struct dem_coupling){.fext = fext, .uf = uf, .eps = &eps,
+                                      .drag = linear_drag, .drag_ctx = &dc,
+                                      .fd = d.cpl.fd, .fd_sum = d.cpl.fd_sum};
+        struct dem_integrator_params p = th_params();
+        p.rtol = 1e-8;
+        void *ctx;
+        assert_int_equal(both[k]->create(&d, &p, &ctx), SIM_OK);
+        double v0 = d.v[2], T = 0.01, fd[3];
+        assert_int_equal(both[k]->advance(ctx, &d, T), SIM_OK);
+        assert_true(rel(dem_mean_drag(&d, fd), T) < 1e-12);
+        double mom = d.m[0] * (d.v[2] - v0), imp = (d.m[0] * -9.81 + fd[2]) * T;
+        double vt = -9.81 * 1e-3 * (1 - exp(-10.0));
+        printf("  %s: v_z(T) = %.6f m/s (exact %.6f), momentum balance "
+               "error %.1e, drag calls %ld\n", both[k]->name, d.v[2], vt,
+               fabs(mom - imp) / fabs(mom), dc.calls);
+        assert_true(rel(d.v[2], vt) < 1e-3);
+        assert_true(fabs(mom - imp) < 1e-9 * fabs(mom));
+        /* external force: x velocity fext/c at steady state */
+        assert_true(rel(d.v[0], fext[0] / dc.c) < 1e-3);
+        assert_true(dc.calls > 10);
+        both[k]->destroy(ctx);
+        dem_free(&d);
+    }
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_free_flight),
+        cmocka_unit_test(test_bad_step_refused),
+        cmocka_unit_test(test_cluster_agreement),
+        cmocka_unit_test(test_sliding_to_rolling),
+        cmocka_unit_test(test_coupling_drag),
+    };
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}
