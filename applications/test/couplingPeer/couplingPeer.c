@@ -36,7 +36,7 @@ struct opts {
     const char *side, *case_dir, *channel, *units, *digest;
     long frames, grains, grow, work_us, dim, slots;
     double timeout, heartbeat, slot_bytes;
-    int gradp, bench, verify, quiet;
+    int gradp, bench, verify, quiet, print_name;
 };
 
 struct arrays {
@@ -64,6 +64,7 @@ static void usage(void)
          "  -gradP           send grad P (Model A)\n"
          "  -noverify        skip value checks (benchmark)\n"
          "  -bench           solid side prints round-trip statistics\n"
+         "  -printName       print the channel name and exit\n"
          "  -quiet");
 }
 
@@ -90,6 +91,7 @@ static int parse(int argc, char **argv, struct opts *o)
         if (!strcmp(a, "-bench")) { o->bench = 1; continue; }
         if (!strcmp(a, "-noverify")) { o->verify = 0; continue; }
         if (!strcmp(a, "-quiet")) { o->quiet = 1; continue; }
+        if (!strcmp(a, "-printName")) { o->print_name = 1; continue; }
         if (!strcmp(a, "-help")) { usage(); exit(0); }
         fprintf(stderr, "couplingPeer: unknown option '%s'\n", a);
         usage();
@@ -365,6 +367,13 @@ int main(int argc, char **argv)
     snprintf(s.units, sizeof s.units, "%s", o.units);
     s.digest = channel_checksum(o.digest, strlen(o.digest), 0);
     s.quiet = o.quiet;
+    if (o.print_name) {
+        if (!s.name[0])
+            TRY_GOTO(rc, channel_default_name(s.case_path, s.name,
+                                              sizeof s.name), out);
+        puts(s.name);
+        return 0;
+    }
     printf("couplingPeer (test tool) side %s pid %d\n", o.side, (int)getpid());
     TRY_GOTO(rc, channel_open(&s, &c), out);
     rc = solid ? run_solid(c, &o, &a, &done) : run_fluid(c, &o, &a, &done);
