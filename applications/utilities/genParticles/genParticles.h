@@ -1,0 +1,87 @@
+/*
+ * genParticles.h — the case read from system/particleDict and the clouds
+ * made from it (internal to the genParticles utility).
+ *
+ * The reference for every key is particleDict.reference beside this file.
+ */
+#ifndef MPSDEM_GENPARTICLES_H
+#define MPSDEM_GENPARTICLES_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+#include "particles/geometry.h"
+#include "particles/lattice.h"
+
+struct dict;
+
+enum region_type { REGION_TANK_WALL, REGION_WALL, REGION_FLUID, REGION_GRAINS };
+extern const char *const region_type_names[]; /* NULL terminated */
+
+/* MPS particle types (field "type" of fluid.vtu). */
+enum { TYPE_FLUID = 0, TYPE_WALL = 1, TYPE_DUMMY = 2 };
+
+struct region {
+    char name[64];
+    enum region_type type;
+    struct geom g;
+    const struct dict *d;   /* its sub-dictionary, for error locations  */
+    unsigned open;          /* tankWall box: bit 2 axis + side open      */
+    double velocity[3];     /* fluid, grains [m/s]                       */
+    double omega[3];        /* grains [rad/s]                            */
+    int hydrostatic;        /* fluid: initial hydrostatic pressure       */
+    int has_surface;        /* fluid: surfaceHeight given                */
+    double surface;         /* fluid: free-surface height [m]            */
+    double diameter;        /* grains [m]                                */
+    double spacing;         /* grains: lattice spacing [m]               */
+    double jitter;          /* grains: amplitude, fraction of spacing    */
+    long seed;              /* grains: jitter seed                       */
+    enum lattice_kind lattice; /* grains                                 */
+    /* filled in by the generator */
+    size_t count[4];        /* fluid, wall, dummy, grains                */
+    double top;             /* fluid: highest particle + dp/2 [m]        */
+};
+
+struct gen_case {
+    const char *dict_path;  /* "system/particleDict" as opened          */
+    const struct dict *d;
+    int dim;                /* 2 or 3                                    */
+    int vertical;           /* 2 in 3-D (z), 1 in 2-D (y)                */
+    double dp;              /* fluid spacing [m]                         */
+    int layers;             /* wall + dummy layers                       */
+    int binary;             /* writeFormat                               */
+    double origin[3];       /* one fluid lattice site [m]                */
+    int nregions;
+    struct region *r;
+    double lo[3], hi[3];    /* box the MPS lattice is scanned over       */
+    double rho, g[3];       /* only when a region asks for hydrostatics  */
+};
+
+/* The MPS cloud (fluid, wall and dummy particles), structure of arrays. */
+struct mps_cloud {
+    size_t n;
+    double *x, *u, *p, *normal;
+    int32_t *type, *patch, *region;
+};
+
+struct dem_cloud {
+    size_t n;
+    double *x, *radius, *u, *omega;
+    int32_t *group;
+};
+
+/* particleDict.c: read and check the dictionary; kernel_radius_hint is
+ * r_e / dp from system/mpsSchemes or 0 when unknown. */
+int gen_read(struct gen_case *c, const struct dict *d, const char *path,
+             double kernel_radius_hint);
+void gen_case_free(struct gen_case *c);
+
+/* generate.c */
+int gen_check_memory(const struct gen_case *c);
+int gen_mps(struct gen_case *c, struct mps_cloud *m);
+int gen_dem(struct gen_case *c, struct dem_cloud *m);
+int gen_hydrostatic(struct gen_case *c, struct mps_cloud *m);
+void mps_cloud_free(struct mps_cloud *m);
+void dem_cloud_free(struct dem_cloud *m);
+
+#endif
