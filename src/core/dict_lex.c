@@ -117,7 +117,7 @@ static int skip_space(struct lexer *lx)
 /* Ends a word (or number, or variable name). */
 static int is_stop(const struct lexer *lx, int c)
 {
-    if (c < 0 || c == ' ' || c == '\t' || c == '\n' || c == '\r'
+    if (c <= 0 || c == ' ' || c == '\t' || c == '\n' || c == '\r'
         || c == '\f' || c == '\v')
         return 1;
     if (c == ';' || c == '{' || c == '}' || c == '"' || c == '[' || c == ']')

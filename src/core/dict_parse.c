@@ -273,8 +273,8 @@ static int parse_dims(struct parser *p, const struct token *open)
             return perr(p, t.line, t.col,
                         "unbalanced '[' opened at %d:%d: found %s before ']'",
                         open->line, open->col, lex_kind_text(t.kind));
-        if (t.kind != T_NUMBER || t.num != (double)(int)t.num
-            || t.num > 1000 || t.num < -1000)
+        if (t.kind != T_NUMBER || t.num > 1000 || t.num < -1000
+            || t.num != (double)(int)t.num)
             return perr(p, t.line, t.col,
                         "expected an integer exponent in the dimension set, "
                         "got '%.*s'", (int)(t.len > 60 ? 60 : t.len), t.start);
