@@ -4,7 +4,10 @@
  * integer fields with few distinct values, how many points take each.
  * Scripts and tests read its output; every line is "key value...".
  *
- *   vtuInfo [-case DIR] FILE...      (FILE relative to the case)
+ *   vtuInfo [-case DIR] [-dump] FILE...      (FILE relative to the case)
+ *
+ * -dump prints, instead, one line per point: x y z and every component of
+ * every field, after a "# x y z name_0 ..." header (for awk).
  */
 #include <inttypes.h>
 #include <math.h>
@@ -74,13 +77,38 @@ static void print_field(const struct vtu_field *f, size_t n)
         print_counts(f, n);
 }
 
-static int info(const struct app *a, const char *rel)
+static void dump(const struct vtu_cloud *c)
+{
+    printf("# x y z");
+    for (int k = 0; k < c->nfields; k++)
+        for (int j = 0; j < c->fields[k].ncomp; j++)
+            printf(c->fields[k].ncomp > 1 ? " %s_%d" : " %s",
+                   c->fields[k].name, j);
+    printf("\n");
+    for (size_t i = 0; i < c->n; i++) {
+        printf("%.17g %.17g %.17g", c->points[3 * i], c->points[3 * i + 1],
+               c->points[3 * i + 2]);
+        for (int k = 0; k < c->nfields; k++) {
+            const struct vtu_field *f = &c->fields[k];
+            for (int j = 0; j < f->ncomp; j++)
+                printf(" %.17g", value(f, i * (size_t)f->ncomp + (size_t)j));
+        }
+        printf("\n");
+    }
+}
+
+static int info(const struct app *a, const char *rel, int dump_points)
 {
     struct vtu_cloud c;
     char path[4096];
     double lo[3] = { 0, 0, 0 }, hi[3] = { 0, 0, 0 };
 
     TRY(vtu_read(app_path(a, rel, path, sizeof path), &c));
+    if (dump_points) {
+        dump(&c);
+        vtu_cloud_free(&c);
+        return SIM_OK;
+    }
     for (size_t i = 0; i < c.n; i++)
         for (int d = 0; d < 3; d++) {
             double x = c.points[3 * i + d];
@@ -99,16 +127,21 @@ static int info(const struct app *a, const char *rel)
 int main(int argc, char **argv)
 {
     struct app app;
+    const char *dump_flag = NULL;
+    const struct app_option opts[] = {
+        { "-dump", 0, NULL, "print every point as a table", &dump_flag },
+        { NULL, 0, NULL, NULL, NULL },
+    };
 
     app_init(&app, "vtuInfo", "print what .vtu particle files hold", argc,
-             argv, NULL, 1);
+             argv, opts, 1);
     if (app.nargs < 1) {
         sim_error(SIM_ERR_INPUT, "no file given (usage: vtuInfo [-case DIR] "
                   "FILE...)");
         app_fatal(&app, SIM_ERR_INPUT);
     }
     for (int i = 0; i < app.nargs; i++) {
-        int rc = info(&app, app.args[i]);
+        int rc = info(&app, app.args[i], dump_flag != NULL);
         if (rc != SIM_OK)
             app_fatal(&app, rc);
     }

@@ -1,0 +1,219 @@
+#!/usr/bin/env bash
+# test/cases/genParticles.sh — genParticles on the small case in
+# test/cases/genParticles/ and variants of it: exact particle counts for
+# boxes, wall/dummy layers, 2-D and 3-D, an obstacle carving fluid, grains
+# overlapping fluid, hexagonal grains, normals, hydrostatic pressure,
+# ascii = binary, determinism, and every bad input refused with
+# system/particleDict:line, exit 1 and no output files. One PASS/FAIL line
+# per check; bin/vtuInfo reads the files back.
+set -u
+ROOT=$(cd "$(dirname "$0")/../.." && pwd)
+GEN=$ROOT/bin/genParticles
+INFO=$ROOT/bin/vtuInfo
+CASE0=$ROOT/test/cases/genParticles
+TMP=$(mktemp -d)
+trap 'rm -rf "$TMP"' EXIT
+nfail=0
+
+pass() { echo "PASS $1"; }
+fail() { echo "FAIL $1: $2"; nfail=$((nfail + 1)); }
+
+for exe in "$GEN" "$INFO"; do
+    [ -x "$exe" ] || { fail genParticles "$exe not built (make $exe)"; exit 1; }
+done
+
+# fresh copy of the example case in $TMP/$1, particleDict edited by sed $2..
+newcase() {
+    local dir=$TMP/$1; shift
+    rm -rf "$dir"; cp -r "$CASE0" "$dir"
+    for e in "$@"; do sed -i "$e" "$dir/system/particleDict"; done
+}
+
+# "key v:n v:n" line of vtuInfo, values sorted, e.g. "counts type 0:500 ..."
+counts() {  # case file field
+    local v
+    v=$("$INFO" -case "$TMP/$1" "$2" |
+        awk -v f="$3" '$1 == "counts" && $2 == f { for (i = 3; i <= NF; i++) print $i }' |
+        sort -t: -k1,1n | tr '\n' ' ')
+    echo "$3 ${v% }"
+}
+field_range() {  # case file field comp -> "min max"
+    "$INFO" -case "$TMP/$1" "$2" | awk -v f="$3" -v c="$4" \
+        '$1 == "range" && $2 == f && $3 == c { print $4, $5 }'
+}
+expect() {  # name got want
+    if [ "$2" = "$3" ]; then pass "$1"; else fail "$1" "got '$2', want '$3'"; fi
+}
+near() {  # name got want tol
+    if awk -v a="$2" -v b="$3" -v t="$4" 'BEGIN { d = a - b; exit !(d <= t && -d <= t) }'
+    then pass "$1"; else fail "$1" "got $2, want $3 +- $4"; fi
+}
+no_leftovers() {  # name case
+    local left
+    left=$(find "$TMP/$2" -name '*.tmp.*' -o -name '*.new.*' | head -3)
+    [ -z "$left" ] && pass "$1" || fail "$1" "temporary files left: $left"
+}
+run() {  # case -> log in $TMP/$1.log, returns the exit status
+    "$GEN" -case "$TMP/$1" > "$TMP/$1.log" 2>&1
+}
+
+# ---- 3-D example: tank (open top), water, block obstacle, grains in the water
+newcase c3
+if run c3; then pass run_3d; else fail run_3d "$(grep -A1 FATAL "$TMP/c3.log" | tail -1)"; fi
+# fluid 5x10x10; tank walls (20+6)(10+6)(15+3) - 20*10*15 = 4488, of which
+# the wall layer (22)(12)(16) - 3000 = 1224; block 4x4x4 = 56 wall + 8 dummy
+expect counts_3d_type "$(counts c3 0/fluid.vtu type)" "type 0:500 1:1280 2:3272"
+expect counts_3d_patch "$(counts c3 0/fluid.vtu patch)" "patch -1:500 0:4488 2:64"
+# grains carve nothing and overlap the fluid: 10x20x8 beads
+expect counts_3d_grains "$(counts c3 0/dem.vtu group)" "group 3:1600"
+# rho g (h - z) at the lowest fluid row: 1000 * 9.81 * (0.1 - 0.005)
+near pressure_3d_max "$(field_range c3 0/fluid.vtu pressure 0 | cut -d' ' -f2)" 931.95 1e-9
+expect pressure_3d_min "$(field_range c3 0/fluid.vtu pressure 0 | cut -d' ' -f1)" 0
+expect radius_3d "$(field_range c3 0/dem.vtu radius 0)" "0.0025 0.0025"
+# the open top: no particle above the tank's highest wall row
+expect bounds_3d "$("$INFO" -case "$TMP/c3" 0/fluid.vtu | awk '$1 == "bounds"')" \
+    "bounds -0.025 -0.025 -0.025 0.225 0.125 0.145"
+if grep -q 'file="0/fluid.vtu"' "$TMP/c3/fluid.pvd" &&
+   grep -q 'timestep="0"' "$TMP/c3/fluid.pvd" &&
+   grep -q 'file="0/dem.vtu"' "$TMP/c3/dem.pvd"; then pass pvd_3d
+else fail pvd_3d "fluid.pvd/dem.pvd lack the time-0 entries"; fi
+if tr -s ' \n' ' ' < "$TMP/c3/constant/particlePatches" |
+   grep -q 'patches ( tank water block beads );'; then pass particlePatches
+else fail particlePatches "constant/particlePatches does not list the regions"; fi
+no_leftovers leftovers_3d c3
+
+# normals: unit, from the fluid into the solid (outward of the tank box,
+# inward of the block); zero for fluid
+"$INFO" -case "$TMP/c3" -dump 0/fluid.vtu > "$TMP/c3.dump"
+bad=$(awk '/^# x y z/ { go = 1; next } go && NF == 13 {
+    x = $1; y = $2; z = $3; t = $4; p = $5; nx = $10; ny = $11; nz = $12
+    len = sqrt(nx * nx + ny * ny + nz * nz)
+    if (t == 0) { if (len != 0) bad++; next }
+    if (len < 1 - 1e-12 || len > 1 + 1e-12) { bad++; next }
+    if (p == 0 && nx * (x - 0.1) + ny * (y - 0.05) + nz * (z - 0.075) <= 0) bad++
+    if (p == 2 && nx * (x - 0.14) + ny * (y - 0.05) + nz * (z - 0.02) >= 0) bad++
+    if (p == 0 && x == -0.005 && y > 0.04 && y < 0.05 && z > 0.04 && z < 0.05 &&
+        (nx != -1 || ny != 0 || nz != 0)) bad++
+  } END { print bad + 0 }' "$TMP/c3.dump")
+expect normals_3d "$bad" 0
+
+# ascii and binary files hold the same numbers
+newcase c3a 's/writeFormat  binary;/writeFormat ascii;/'
+run c3a
+"$INFO" -case "$TMP/c3a" -dump 0/fluid.vtu > "$TMP/c3a.dump"
+if grep -q 'format="ascii"' "$TMP/c3a/0/fluid.vtu" &&
+   cmp -s <(sed -n '/^# x/,/^End/p' "$TMP/c3.dump") <(sed -n '/^# x/,/^End/p' "$TMP/c3a.dump")
+then pass ascii_equals_binary; else fail ascii_equals_binary "dumps differ"; fi
+
+# running again rewrites the same files and keeps one pvd entry
+cp "$TMP/c3/0/dem.vtu" "$TMP/dem.first"
+run c3
+if cmp -s "$TMP/dem.first" "$TMP/c3/0/dem.vtu" &&
+   [ "$(grep -c '<DataSet' "$TMP/c3/dem.pvd")" = 1 ]; then pass rerun_same
+else fail rerun_same "second run differs or duplicated the pvd entry"; fi
+
+# ---- an obstacle carves the fluid it overlaps (listed after it) -------------
+newcase carve 's/max     (0.05 0.1 0.1);/max (0.2 0.1 0.1);/'
+run carve
+# 20x10x10 = 2000 sites minus the 4x4x4 block
+expect carve_fluid "$(counts carve 0/fluid.vtu type)" "type 0:1936 1:1280 2:3272"
+# listed before the water, the block is filled by it: an empty region
+newcase carve2 's/max     (0.05 0.1 0.1);/max (0.2 0.1 0.1);/' \
+    '/^    water/,/^    }/d' \
+    's/^    tank /    water { shape box; min (0 0 0); max (0.2 0.1 0.1); type fluid; }\n    tank /'
+# put water after block: move the inserted line below the block region
+awk '/^    water \{/ { w = $0; next } { print } /^    block/ { b = 1 }
+     b && /^    }/ { print w; b = 0 }' "$TMP/carve2/system/particleDict" > "$TMP/pd" &&
+    mv "$TMP/pd" "$TMP/carve2/system/particleDict"
+if ! run carve2 && grep -q "particleDict:[0-9]*:[0-9]*: region 'block' gives no particles" "$TMP/carve2.log"
+then pass carve_order; else fail carve_order "block before water should leave block empty"; fi
+
+# ---- 2-D: x-y plane, gravity along -y, hexagonal grains ---------------------
+newcase c2
+cat > "$TMP/c2/system/particleDict" <<'DICT'
+dimension 2;            // x-y plane
+dp 0.01;                // [m]
+wallLayers auto;
+kernelRadius 2.1;       // [dp]
+regions
+(
+    tank  { shape box; min (0 0 0); max (0.2 0.15 0); type tankWall; open (ymax); }
+    water { shape box; min (0 0 0); max (0.05 0.1 0); type fluid; hydrostaticPressure yes; }
+    beads { shape box; min (0 0.01 0); max (0.05 0.05 0); type grains;
+            diameter 0.005; lattice hexagonal; }
+);
+DICT
+sed -i 's/(0 0 -9.81)/(0 -9.81 0)/' "$TMP/c2/constant/g"
+if run c2; then pass run_2d; else fail run_2d "$(grep -A1 FATAL "$TMP/c2.log" | tail -1)"; fi
+# (20+6)(15+3) - 20*15 = 168 wall+dummy, (22)(16) - 300 = 52 wall
+expect counts_2d_type "$(counts c2 0/fluid.vtu type)" "type 0:50 1:52 2:116"
+# hexagonal rows 0.0043 apart: 5 rows of 10 and 4 shifted rows of 9
+expect counts_2d_grains "$(counts c2 0/dem.vtu group)" "group 2:86"
+near pressure_2d_max "$(field_range c2 0/fluid.vtu pressure 0 | cut -d' ' -f2)" 931.95 1e-9
+expect z_2d "$(field_range c2 0/dem.vtu velocity 2) $("$INFO" -case "$TMP/c2" 0/fluid.vtu | awk '$1 == "bounds" { print $4, $7 }')" "0 0 0 0"
+
+# ---- curved shapes: a sphere of grains and a cylinder obstacle, counted
+# against an independent enumeration of the lattice sites
+newcase curved 's/^    block/    pillar { shape cylinder; point1 (0.1 0.05 0); point2 (0.1 0.05 0.12); radius 0.02; type wall; }\n    block/' \
+    's/shape    box;/shape sphere; centre (0.025 0.05 0.05); radius 0.024;/' \
+    '/min      (0 0 0.01);/d' '/max      (0.05 0.1 0.05);/d'
+run curved || fail run_curved "$(grep -A1 FATAL "$TMP/curved.log" | tail -1)"
+want=$(awk 'BEGIN { for (i = -5; i < 25; i++) for (j = -5; j < 15; j++) for (k = -5; k < 15; k++) {
+        x = 0.005 + 0.01 * i; y = 0.005 + 0.01 * j; z = 0.005 + 0.01 * k
+        r = sqrt((x - 0.1) ^ 2 + (y - 0.05) ^ 2); dr = r - 0.02
+        da = (z < 0.06 ? -z : z - 0.12); d = (dr > da ? dr : da)
+        if (dr > 0 || da > 0) d = sqrt((dr > 0 ? dr : 0) ^ 2 + (da > 0 ? da : 0) ^ 2)
+        if (d <= 1e-11 && z > 0) n[(-d < 0.01) ? 1 : ((-d < 0.03) ? 2 : 3)]++ }
+      print "patch2 " n[1] + n[2] }')
+got=$(counts curved 0/fluid.vtu patch | tr ' ' '\n' | awk -F: '$1 == 2 { print "patch2 " $2 }')
+expect cylinder_count "$got" "$want"
+want=$(awk 'BEGIN { for (i = 0; i < 20; i++) for (j = 0; j < 40; j++) for (k = 0; k < 40; k++) {
+        x = 0.0035 + 0.005 * i; y = 0.0285 + 0.005 * j; z = 0.0285 + 0.005 * k
+        if (sqrt((x - 0.025) ^ 2 + (y - 0.05) ^ 2 + (z - 0.05) ^ 2) <= 0.024 - 0.0025 + 1e-11) n++ }
+      print "group 4:" n }')
+expect sphere_grains "$(counts curved 0/dem.vtu group)" "$want"
+
+# ---- jitter: deterministic for a seed, and grains never overlap --------------
+newcase jit 's/spacing  0.005;/spacing 0.006;/' 's/jitter   0; /jitter 0.08;/' \
+    's/max      (0.05 0.1 0.05);/max (0.03 0.03 0.03);/'
+run jit && cp "$TMP/jit/0/dem.vtu" "$TMP/jit1.vtu" && run jit
+if cmp -s "$TMP/jit1.vtu" "$TMP/jit/0/dem.vtu"; then pass jitter_deterministic
+else fail jitter_deterministic "two runs with the same seed differ"; fi
+"$INFO" -case "$TMP/jit" -dump 0/dem.vtu > "$TMP/jit.dump"
+res=$(awk '/^# x y z/ { go = 1; next } go && NF > 6 { x[n] = $1; y[n] = $2; z[n] = $3; n++ }
+  END { m = 1; moved = 0
+        for (i = 0; i < n; i++) { for (j = i + 1; j < n; j++) {
+            d = sqrt((x[i] - x[j]) ^ 2 + (y[i] - y[j]) ^ 2 + (z[i] - z[j]) ^ 2); if (d < m) m = d }
+          f = (x[i] - 0.00298) / 0.006; if (f - int(f + 0.5) > 1e-6 || int(f + 0.5) - f > 1e-6) moved++ }
+        print n, (m >= 0.005 - 1e-12) ? "apart" : "overlap", (moved > n / 2) ? "jittered" : "regular" }' "$TMP/jit.dump")
+# box 0.03 x 0.03 x 0.02 (z from 0.01), spacing 0.006, diameter 0.005,
+# jitter 0.00048: first centre 0.00298 in, so 5 x 5 x 3
+expect jitter_grains "$res" "75 apart jittered"
+
+# ---- bad input: exit 1, file:line, nothing written --------------------------
+bad() {  # name phrase sed-edits...
+    local name=$1 phrase=$2; shift 2
+    newcase "$name" "$@"
+    if run "$name"; then fail "bad_$name" "exit status 0"; return; fi
+    if ! grep -q "system/particleDict:[0-9]*:[0-9]*: .*$phrase" "$TMP/$name.log"; then
+        fail "bad_$name" "no 'particleDict:line:col: ...$phrase' in: $(grep -A1 FATAL "$TMP/$name.log" | tail -1)"
+        return
+    fi
+    local out
+    out=$(cd "$TMP/$name" && ls -d 0/* *.pvd constant/particlePatches 2> /dev/null)
+    [ -z "$out" ] || { fail "bad_$name" "files written: $out"; return; }
+    pass "bad_$name"
+}
+bad dp_negative "dp must be a positive" 's/^dp           0.01;/dp -0.01;/'
+bad dp_zero "dp must be a positive" 's/^dp           0.01;/dp 0;/'
+bad outside_tank "is not inside the tank 'tank'" 's/max     (0.16 0.07 0.04);/max (0.16 0.07 0.4);/'
+bad empty_region "region 'beads' gives no particles" 's/max      (0.05 0.1 0.05);/max (0.05 0.1 0.0104);/'
+bad unknown_shape "valid: box cylinder sphere plane" '0,/shape   box;/s//shape boxx;/'
+bad unknown_type "valid: tankWall wall fluid grains" 's/type    wall;/type walls;/'
+bad too_big "would need about .* bytes" 's/^dp           0.01;/dp 1e-6;/'
+bad no_kernel_radius "wallLayers auto needs" 's/^kernelRadius 2.1;//'
+bad grain_overlap "grains would overlap" 's/diameter 0.005;/diameter 0.006;/'
+bad open_face "unknown face 'top'" 's/open    (zmax);/open (top);/'
+no_leftovers leftovers_bad too_big
+
+[ "$nfail" -eq 0 ]
