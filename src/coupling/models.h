@@ -1,0 +1,81 @@
+/*
+ * models.h — Model A and Model B of the unresolved coupling (Xie et al.
+ * 2025 eqs. 1-5, 12-13, 34-36; METHODS.md A.2, A.4, A.7, A.10), as small
+ * array functions that the two solvers call, plus the coupling settings of
+ * system/couplingDict and the run-time validity guards.
+ *
+ * Grain side (demSolid, at every sub-step):
+ *   A: F^int_k = F^d_k - V_k gradP_k                                   (34)
+ *   B: F^int_k = F^d_k / eps_k - V_k rho_f g                           (35)
+ *
+ * Fluid side (mpsFluid), with intrinsic velocity u stored and eps_i frozen
+ * over the step (A0-01), u_d = eps u:
+ *   step 7, prediction  u* = u^m + dt [ visc + g + a_i ]
+ *       A: a_i = -f_A,i / (rho_f eps_i)
+ *       B: a_i = -f_A,i / (rho_f eps_i^2) + g (1/eps_i - 1)
+ *   step 9, PPE source  s_i x [ (1-gamma)(rho/dt) div u* - gamma (rho/dt^2)
+ *                               (n - n0)/n0 ]
+ *       A: s_i = 1 (12)         B: s_i = eps_i (13)
+ *   step 10, correction u^{m+1} = u* - (dt/rho_f) c_i grad P
+ *       A: c_i = 1              B: c_i = 1/eps_i
+ * "visc" is the viscous term of the MPS solver, nu lap(u_d)/eps_i.
+ */
+#ifndef MPSDEM_COUPLING_MODELS_H
+#define MPSDEM_COUPLING_MODELS_H
+
+#include <stdint.h>
+
+struct dict;
+struct drag_ops;
+struct drag_fluid;
+
+enum coupling_model { COUPLING_MODEL_A = 0, COUPLING_MODEL_B = 1 };
+
+/* system/couplingDict, the physics part (channel settings: channel.h). */
+struct coupling_settings {
+    enum coupling_model model;      /* `model A|B;` (default B)           */
+    const struct drag_ops *drag;    /* `dragModel` (default ergunWenYu)   */
+    double radius;                  /* `kernelRadius` r_e,s / dp (4.1)    */
+    double eps_min;                 /* `porosityMin` (0.3)                */
+};
+
+/* Read the entries above; errors cite couplingDict's file and line. */
+int coupling_settings_read(const struct dict *d,
+                           struct coupling_settings *s);
+
+/* Hydrodynamic force on every grain, eq. (34) or (35) [N].
+ *   Fd (3 ng) drag of eq. (25) at this sub-step; eps_k (ng) and, for A,
+ *   gradp_k (3 ng) from interp.h; V (ng) grain volumes; g (3) gravity;
+ *   wet (may be NULL = all) dry grains (wet[k] = 0) get Fint = 0. */
+void coupling_grain_force(enum coupling_model m, int ng, const double *Fd,
+                          const double *eps_k, const double *gradp_k,
+                          const double *V, double rho_f, const double g[3],
+                          const uint8_t *wet, double *Fint);
+
+/* Extra acceleration a_i of the prediction (step 7), 3 np [m/s^2], from
+ * the reaction fA (3 np) of eq. (36); rows (may be NULL) limits the
+ * particles written. */
+void coupling_mps_accel(enum coupling_model m, int np, const double *eps,
+                        const double *fA, double rho_f, const double g[3],
+                        const uint8_t *rows, double *a);
+
+/* PPE source factor s_i (step 9) and correction factor c_i (step 10), np. */
+void coupling_ppe_source_factor(enum coupling_model m, int np,
+                                const double *eps, double *s);
+void coupling_correction_factor(enum coupling_model m, int np,
+                                const double *eps, double *c);
+
+/* Run-time guards (warnings, counts returned):
+ * grains too large for the kernel (d > r_e,s / 3, METHODS.md A0-13). */
+int coupling_guard_grain_size(int ng, const double *d, double re_s);
+/* Drag relaxation time tau = rho_s / K shorter than the fluid step dt for
+ * grains at porosity eps_k and slip |u_k - v_k| (an explicit exchange over
+ * dt would overshoot; sub-stepping the drag on the DEM side is then
+ * essential). Returns the count; *tau_min the shortest time [s]. */
+int coupling_guard_relaxation(const struct drag_ops *drag,
+                              const struct drag_fluid *f, int ng,
+                              const double *eps_k, const double *u_k,
+                              const double *v_k, const double *d,
+                              double rho_s, double dt, double *tau_min);
+
+#endif

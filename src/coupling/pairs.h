@@ -1,0 +1,68 @@
+/*
+ * pairs.h — grain / MPS-particle pairs within the coupling radius r_e,s
+ * (METHODS.md A.10 step 1, "MPS-DEM (cells of r_e,s)").
+ *
+ * The MPS neighbour list holds particle-particle pairs only, so the
+ * coupling keeps its own list, built by binning the MPS particles into
+ * cells of size >= r_e,s over the box of the grains (expanded by r_e,s):
+ * work is proportional to the particles near grains, not to the domain.
+ *
+ * The list is stored twice, because eqs. (32), (33) and (36) sum over the
+ * particles of one grain and eq. (31) over the grains of one particle, and
+ * each loop is then a race-free gather under OpenMP:
+ *   grain-major     gstart[k]..gstart[k+1]: particle gj[], weight gw[]
+ *   particle-major  pstart[i]..pstart[i+1]: grain pk[],    weight pw[]
+ * Weights are w_s(r) of eq. (29); pairs with r >= r_e,s are not stored.
+ * The particle-major rows list grains in ascending order, and the content
+ * of the grain-major rows does not depend on the number of threads, so
+ * every sum below is reproducible run to run (restart = continuous run).
+ *
+ * Positions are interleaved x[3*i] (z = 0 in 2-D). A particle with a
+ * non-finite position has no pairs; a grain with one is an error (the DEM
+ * side blew up and should say so).
+ *
+ * Memory: the struct owns every array. coupling_pairs_build() grows them
+ * when a build needs more room and otherwise allocates nothing, so after
+ * the first steps a run does no allocation here.
+ */
+#ifndef MPSDEM_COUPLING_PAIRS_H
+#define MPSDEM_COUPLING_PAIRS_H
+
+#include <stddef.h>
+#include <stdint.h>
+
+struct coupling_pairs {
+    int dim;              /* 2 or 3                                     */
+    double re;            /* coupling radius r_e,s [m]                  */
+    int ng, np;           /* grains and MPS particles of the last build */
+    int64_t npair;
+    int64_t *gstart;      /* ng+1                                       */
+    int32_t *gj;          /* npair particle indices                     */
+    double *gw;           /* npair weights w_s                          */
+    int64_t *pstart;      /* np+1                                       */
+    int32_t *pk;          /* npair grain indices                        */
+    double *pw;           /* npair weights w_s                          */
+    /* work storage: cells of the grain box */
+    double lo[3], h;      /* box origin and cell size (>= re)           */
+    int nc[3];
+    int64_t *cstart;      /* ncell+1                                    */
+    int32_t *cidx;        /* binned particles, cell by cell             */
+    int32_t *pcell;       /* cell of each particle, -1 outside the box  */
+    double *gwork;        /* 3 ng scratch for per-grain sums (reaction) */
+    size_t cap_g, cap_gw, cap_p, cap_pair, cap_cell;
+};
+
+/* Build the pairs of ng grains at xg and np MPS particles at xp with the
+ * coupling radius re [m] in dim dimensions (cell search). P must be zeroed
+ * before its first use. */
+int coupling_pairs_build(struct coupling_pairs *P, int dim, double re,
+                         int ng, const double *xg, int np, const double *xp);
+
+/* The same pairs by an O(ng np) loop (reference for tests). */
+int coupling_pairs_build_brute(struct coupling_pairs *P, int dim, double re,
+                               int ng, const double *xg, int np,
+                               const double *xp);
+
+void coupling_pairs_free(struct coupling_pairs *P);
+
+#endif
