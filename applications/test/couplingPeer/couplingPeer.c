@@ -36,7 +36,7 @@ struct opts {
     const char *side, *case_dir, *channel, *units, *digest;
     long frames, grains, grow, work_us, dim, slots;
     double timeout, heartbeat, slot_bytes;
-    int gradp, bench, verify, quiet, print_name;
+    int gradp, bench, verify, quiet, print_name, oneway;
 };
 
 struct arrays {
@@ -65,6 +65,7 @@ static void usage(void)
          "  -noverify        skip value checks (benchmark)\n"
          "  -bench           solid side prints round-trip statistics\n"
          "  -printName       print the channel name and exit\n"
+         "  -oneway          solid streams DEM states, fluid never answers\n"
          "  -quiet");
 }
 
@@ -92,6 +93,7 @@ static int parse(int argc, char **argv, struct opts *o)
         if (!strcmp(a, "-noverify")) { o->verify = 0; continue; }
         if (!strcmp(a, "-quiet")) { o->quiet = 1; continue; }
         if (!strcmp(a, "-printName")) { o->print_name = 1; continue; }
+        if (!strcmp(a, "-oneway")) { o->oneway = 1; continue; }
         if (!strcmp(a, "-help")) { usage(); exit(0); }
         fprintf(stderr, "couplingPeer: unknown option '%s'\n", a);
         usage();
@@ -170,6 +172,8 @@ static int solid_step(struct channel *c, const struct opts *o,
     }
     struct proto_dem_state ds = { n, a->pos, a->vel, a->rad, a->drag };
     TRY(proto_send_dem_state(c, k, k * DT, &ds));
+    if (o->oneway)
+        return SIM_OK;
     TRY(channel_recv(c, &f, &payload));
     TRY(proto_view_fluid_state(&f, payload, &fs));
     if (fs.n != n || f.step != k)
@@ -281,6 +285,8 @@ static int fluid_step(struct channel *c, const struct opts *o,
     for (size_t i = 0; o->verify && i < n; i++)
         fluid_answer(a, i, &a->u[3 * i], &a->eps[i], &a->gradp[3 * i]);
     work(o->work_us);
+    if (o->oneway)
+        return SIM_OK;
     struct proto_fluid_state fs = { n, a->u, a->eps,
                                     o->gradp ? a->gradp : NULL };
     return proto_send_fluid_state(c, f->step, f->time, &fs);
