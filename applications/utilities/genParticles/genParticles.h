@@ -27,6 +27,7 @@ struct region {
     struct geom g;
     const struct dict *d;   /* its sub-dictionary, for error locations  */
     unsigned open;          /* tankWall box: bit 2 axis + side open      */
+    int bounded;            /* shape has a finite bounding box           */
     double velocity[3];     /* fluid, grains [m/s]                       */
     double omega[3];        /* grains [rad/s]                            */
     int hydrostatic;        /* fluid: initial hydrostatic pressure       */

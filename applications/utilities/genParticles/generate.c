@@ -16,6 +16,8 @@
  *   tankWall  sites outside the shape or on its surface, the same layers
  *             counted outwards (distance in the max-norm for a box, so that
  *             corners are filled square), except beyond an open face.
+ * An unbounded wall (a half-space) claims only sites inside a tank or its
+ * wall layers.
  * The normal of a wall or dummy particle is the unit normal of its
  * region's surface pointing from the fluid into the solid.
  *
@@ -67,6 +69,22 @@ static int in_a_tank(const struct gen_case *c, const double x[3], int *any)
     return 0;
 }
 
+/* An unbounded solid (a sloping floor) stops at the tanks' outer wall
+ * layers, so that it adds nothing outside the container. */
+static int in_a_tank_band(const struct gen_case *c, const double x[3])
+{
+    double tol = TOL * c->dp;
+    int any = 0, open;
+    for (int i = 0; i < c->nregions; i++)
+        if (c->r[i].type == REGION_TANK_WALL) {
+            any = 1;
+            if (tank_depth(&c->r[i], x, c->dim, tol, &open) <
+                    c->layers * c->dp - tol && !open)
+                return 1;
+        }
+    return !any;
+}
+
 /* Owner region and particle type of site x; 0 when the site holds no
  * particle. */
 static int classify(const struct gen_case *c, const double x[3], int *type,
@@ -89,6 +107,8 @@ static int classify(const struct gen_case *c, const double x[3], int *type,
             *region = i;
             return 1;
         case REGION_WALL:
+            if (!r->bounded && !in_a_tank_band(c, x))
+                continue;
             depth = -geom_distance(&r->g, x);
             break;
         case REGION_TANK_WALL:

@@ -132,7 +132,10 @@ static int read_region(const struct gen_case *c, struct region *r)
     const struct dict *d = r->d;
     int type;
 
+    double lo[3], hi[3];
+
     TRY(read_shape(c, r));
+    r->bounded = geom_bbox(&r->g, lo, hi);
     TRY(dict_get_word(d, "type", region_type_names, &type));
     r->type = (enum region_type)type;
     TRY(dict_get_vector_or(d, "velocity", 3, zero3, r->velocity));
