@@ -139,17 +139,25 @@ static char *append(char *s, const char *fmt, ...)
     return r;
 }
 
-/* "key value;" nested under the missing dictionaries comps[0..n-2]. */
+/* "key value;" nested under the dictionaries comps[0..n-2]. `shadow` is
+ * the dictionary of this level that exists but whose text is elsewhere (an
+ * #include): its entries are merged in first with "$name;", so that the new
+ * dictionary replaces it without losing them. */
 static char *nested(char *s, char **comps, int n, const char *value,
-                    int indent)
+                    int indent, const struct dict *shadow)
 {
     if (n == 1) {
         int pad = 16 - (int)strlen(comps[0]);
         return append(s, "%*s%s%*s%s;\n", indent, "", comps[0],
                       pad > 1 ? pad : 1, "", value);
     }
+    const struct dict_entry *e = shadow ? dict_lookup(shadow, comps[0]) : NULL;
+    const struct dict *sub = e && e->val->kind == DICT_DICT ? e->val->u.d
+                                                            : NULL;
     s = append(s, "%*s%s\n%*s{\n", indent, "", comps[0], indent, "");
-    s = nested(s, comps + 1, n - 1, value, indent + 4);
+    if (sub)
+        s = append(s, "%*s$%s;\n", indent + 4, "", comps[0]);
+    s = nested(s, comps + 1, n - 1, value, indent + 4, sub);
     return append(s, "%*s}\n", indent, "");
 }
 
@@ -157,7 +165,7 @@ static char *nested(char *s, char **comps, int n, const char *value,
  * [beg, end) ("{ ... }"), or at the end of the file when beg == end == -1. */
 static int plan_insert(const char *text, size_t len, size_t beg, size_t end,
                        char **comps, int n, const char *value, int depth,
-                       struct edit *ed)
+                       const struct dict *shadow, struct edit *ed)
 {
     int indent = 4 * depth;
     char *s = strdup("");
@@ -167,7 +175,7 @@ static int plan_insert(const char *text, size_t len, size_t beg, size_t end,
         if (len && text[len - 1] != '\n')
             s = append(s, "\n");
         s = append(s, "\n");
-        s = nested(s, comps, n, value, 0);
+        s = nested(s, comps, n, value, 0, shadow);
     } else {
         size_t close = end - 1; /* the '}' */
         size_t ls = close;
@@ -176,12 +184,12 @@ static int plan_insert(const char *text, size_t len, size_t beg, size_t end,
         if (ls > beg && text[ls - 1] == '\n') {
             ed->at = ls;
             ed->cut = 0;
-            s = nested(s, comps, n, value, indent);
+            s = nested(s, comps, n, value, indent, shadow);
         } else {
             ed->at = close;
             ed->cut = 0;
             s = append(s, "\n");
-            s = nested(s, comps, n, value, indent);
+            s = nested(s, comps, n, value, indent, shadow);
             s = append(s, "%*s", indent > 4 ? indent - 4 : 0, "");
         }
     }
@@ -201,7 +209,7 @@ static int plan_open_copy(const char *text, const struct dict_entry *e,
     char *s = strdup("");
     s = append(s, "\n%*s{\n%*s%.*s;\n", indent - 4, "", indent, "",
                (int)(e->vend - e->vbeg), text + e->vbeg);
-    s = nested(s, comps, n, value, indent);
+    s = nested(s, comps, n, value, indent, e->val->u.d);
     s = append(s, "%*s}", indent - 4, "");
     if (!s)
         return sim_error(SIM_ERR_NOMEM, "out of memory");
@@ -228,7 +236,7 @@ static int plan_edit(const struct dict *top, const char *text, size_t len,
         struct dict_entry *e = dict_lookup(cur, comps[i]);
         if (!e || !editable(top, e))
             return plan_insert(text, len, beg, end, comps + i, n - i, value,
-                               i, ed);
+                               i, cur, ed);
         if (i == n - 1) {
             ed->at = e->vbeg;
             ed->cut = e->vend - e->vbeg;
