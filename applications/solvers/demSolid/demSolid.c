@@ -1,0 +1,233 @@
+/*
+ * demSolid — DEM solver for dry (standalone) granular flows, and the DEM
+ * side of MPS-DEM coupling (METHODS.md A.6; DESIGN.md §4-5).
+ *
+ * Reads   system/controlDict, system/demSolution, constant/demProperties,
+ *         constant/g (optional), system/particleDict (walls; optional),
+ *         <startTime>/dem.vtu (+ <startTime>/demContacts on restart)
+ * Writes  <time>/dem.vtu, <time>/demContacts, dem.pvd, postProcessing/
+ *
+ * controlDict's deltaT is the output/function-object (and, coupled, the
+ * coupling) interval; the DEM sub-steps inside it are the integrator's
+ * business (system/demSolution).
+ */
+#include <stdio.h>
+#include <string.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include "core/app.h"
+#include "core/dict.h"
+#include "core/error.h"
+#include "core/log.h"
+#include "core/time.h"
+#include "dem/dem.h"
+#include "dem/dem_case.h"
+#include "dem/functionObjects/dem_fo.h"
+#include "io/vtu.h"
+
+struct solid {
+    struct app app;
+    struct dict *control, *props, *solution, *particles, *gravity;
+    struct run_time rt;
+    struct dem d;
+    struct dem_solution sol;
+    void *integ;
+    struct fo_list *fos;
+    struct fo_scene scene;
+    struct vtu_cloud cloud;
+    struct vtu_field fields[5];
+    const char *patch_ptrs[DEM_MAX_PATCHES];
+    int dim;
+};
+
+static int read_optional(struct solid *s, const char *rel, struct dict **out)
+{
+    char path[4200];
+    *out = NULL;
+    if (access(app_path(&s->app, rel, path, sizeof path), F_OK) != 0)
+        return SIM_OK;
+    return app_read_dict(&s->app, rel, out);
+}
+
+static int create_time(struct solid *s)
+{
+    TRY(app_read_dict(&s->app, "system/controlDict", &s->control));
+    return time_read(s->control, s->app.case_abs, &s->rt);
+}
+
+static int create_grains(struct solid *s)
+{
+    struct dem *d = &s->d;
+    char rel[256], path[4200];
+    TRY(app_read_dict(&s->app, "constant/demProperties", &s->props));
+    TRY(dem_read_properties(s->props, d));
+    TRY(read_optional(s, "constant/g", &s->gravity));
+    TRY(dem_read_gravity(s->gravity, d));
+    TRY(read_optional(s, "system/particleDict", &s->particles));
+    s->dim = 3;
+    if (s->particles)
+        TRY(dem_read_walls(s->particles, d, &s->dim));
+    snprintf(rel, sizeof rel, "%s/dem.vtu", s->rt.name);
+    TRY(dem_read_grains(app_path(&s->app, rel, path, sizeof path), d));
+    d->t = s->rt.value;
+    TRY(dem_setup(d));                 /* radii, masses, Rayleigh step */
+    TRY(app_read_dict(&s->app, "system/demSolution", &s->solution));
+    TRY(dem_read_solution(s->solution, d, &s->sol));
+    TRY(dem_setup(d));                 /* neighbour list with the skin  */
+    log_info("Grains: %zu, R in [%g, %g] m, mass %g kg; walls: %d; "
+             "Rayleigh step (eq. 38) %.4g s; skin %g m", d->n, d->rmin,
+             d->rmax, d->n ? d->m[0] : 0.0, d->nwalls, d->dt_rayleigh,
+             d->nl.skin);
+    TRY(dem_check_initial_overlap(d, &s->sol, path));
+    int found;
+    snprintf(rel, sizeof rel, "%s/demContacts", s->rt.name);
+    TRY(dem_read_contacts(app_path(&s->app, rel, path, sizeof path), d,
+                          &found));
+    if (found)
+        log_info("Contact histories read from %s", rel);
+    return s->sol.integrator->create(d, &s->sol.params, &s->integ);
+}
+
+static void refresh_scene(struct solid *s)
+{
+    struct dem *d = &s->d;
+    struct vtu_field f[5] = {
+        {"radius", VTU_FLOAT64, 1, d->r},
+        {"velocity", VTU_FLOAT64, 3, d->v},
+        {"omega", VTU_FLOAT64, 3, d->w},
+        {"group", VTU_INT32, 1, d->group},
+        {"id", VTU_INT64, 1, d->id},
+    };
+    memcpy(s->fields, f, sizeof f);
+    s->cloud = (struct vtu_cloud){.n = d->n, .points = d->x, .nfields = 5,
+                                  .fields = s->fields, .time = d->t};
+    for (int p = 0; p < d->npatches; p++)
+        s->patch_ptrs[p] = d->patch_names[p];
+    s->scene = (struct fo_scene){
+        .time = s->rt.value, .dt = s->rt.dt, .step = s->rt.step,
+        .dim = s->dim, .cloud_name = "dem", .cloud = &s->cloud,
+        .spacing = 2 * d->rmax, .patch_names = s->patch_ptrs,
+        .npatches = d->npatches, .solver = d};
+}
+
+static int create_functions(struct solid *s)
+{
+    static const struct fo_ops *const *const tables[] = {
+        fo_generic_table, dem_fo_table, NULL};
+    refresh_scene(s);
+    return fo_list_create(s->rt.functions, tables, &s->scene,
+                          s->app.case_abs, s->rt.start_time, s->rt.precision,
+                          &s->fos);
+}
+
+static int write_fields(struct solid *s)
+{
+    char dir[4200], path[4400], pvd[4200], rel[256];
+    TRY(time_make_dir(&s->rt, s->app.case_abs, dir, sizeof dir));
+    snprintf(path, sizeof path, "%s/dem.vtu", dir);
+    TRY(dem_write_grains(path, &s->d, s->rt.binary));
+    snprintf(path, sizeof path, "%s/demContacts", dir);
+    TRY(dem_write_contacts(path, &s->d));
+    snprintf(rel, sizeof rel, "%s/dem.vtu", s->rt.name);
+    return pvd_add(app_path(&s->app, "dem.pvd", pvd, sizeof pvd), s->rt.value,
+                   rel);
+}
+
+static int start_output(struct solid *s)
+{
+    char pvd[4200], rel[256];
+    app_path(&s->app, "dem.pvd", pvd, sizeof pvd);
+    if (access(pvd, F_OK) == 0)
+        TRY(pvd_truncate(pvd, s->rt.value));
+    snprintf(rel, sizeof rel, "%s/dem.vtu", s->rt.name);
+    TRY(pvd_add(pvd, s->rt.value, rel));
+    char used[4200];
+    app_path(&s->app, "postProcessing", used, sizeof used);
+    if (access(used, F_OK) != 0 && mkdir(used, 0777) != 0)
+        return sim_error(SIM_ERR_IO, "%s: cannot create", used);
+    app_path(&s->app, "postProcessing/usedParameters", used, sizeof used);
+    return params_write(used, 1);
+}
+
+static int step(struct solid *s)
+{
+    struct dem *d = &s->d;
+    time_set_step(&s->rt, s->rt.delta_t);
+    time_increment(&s->rt);
+    TRY(s->sol.integrator->advance(s->integ, d, s->rt.value));
+    long outside = dem_check_domain(d);
+    if (outside < 0)
+        return SIM_ERR_NOMEM;
+    if (outside > 0)
+        log_warn("t = %s: %ld grains outside the domain%s", s->rt.name,
+                 outside, d->remove_outside ? " (removed)" : "");
+    refresh_scene(s);
+    TRY(fo_list_execute(s->fos, &s->scene, s->rt.write_now));
+    if (s->rt.write_now) {
+        TRY(write_fields(s));
+        app_log_times(&s->app);
+    }
+    char extra[256];
+    snprintf(extra, sizeof extra, "substeps %ld rejected %ld forceEvals %ld "
+             "contacts %ld+%ld", d->stats.steps, d->stats.rejected,
+             d->stats.fevals + d->stats.hist_evals, d->ncontacts,
+             d->nwall_contacts);
+    time_log_progress(&s->rt, extra);
+    return SIM_OK;
+}
+
+static void final_stats(const struct solid *s)
+{
+    const struct dem_stats *st = &s->d.stats;
+    double cpu = app_cpu_time() - s->app.cpu0;
+    double wall = app_wall_time() - s->app.wall0;
+    double ps = (double)s->d.n * (double)st->steps;
+    log_info("\nDEM statistics (%s)", s->sol.integrator->name);
+    log_info("    steps taken          %ld", st->steps);
+    log_info("    steps rejected       %ld", st->rejected);
+    log_info("    stability-limited    %ld", st->stab_limited);
+    log_info("    force evaluations    %ld (+ %ld history commits)",
+             st->fevals, st->hist_evals);
+    log_info("    neighbour builds     %ld", st->rebuilds);
+    log_info("    grains removed       %ld", st->removed);
+    log_info("    grains               %zu", s->d.n);
+    log_info("    particle-steps/s     %.4g (wall), %.4g per CPU second",
+             wall > 0 ? ps / wall : 0.0, cpu > 0 ? ps / cpu : 0.0);
+}
+
+static void cleanup(struct solid *s)
+{
+    if (s->integ)
+        s->sol.integrator->destroy(s->integ);
+    fo_list_free(s->fos);
+    dem_free(&s->d);
+    dict_free(s->control);
+    dict_free(s->props);
+    dict_free(s->solution);
+    dict_free(s->particles);
+    dict_free(s->gravity);
+}
+
+int main(int argc, char **argv)
+{
+    static struct solid s;
+    int rc;
+
+    app_init(&s.app, "demSolid", "DEM solver: spheres, contact sub-models, "
+             "ARKode or Verlet sub-stepping", argc, argv, NULL, 0);
+    dem_init(&s.d);
+    if ((rc = create_time(&s)) || (rc = create_grains(&s))
+        || (rc = create_functions(&s)) || (rc = start_output(&s)))
+        app_fatal(&s.app, rc);
+    dict_warn_unused(s.control);
+    dict_warn_unused(s.props);
+    dict_warn_unused(s.solution);
+    log_info("\nStarting time loop\n");
+    while (time_running(&s.rt))
+        if ((rc = step(&s)))
+            app_fatal(&s.app, rc);
+    final_stats(&s);
+    cleanup(&s);
+    return app_end(&s.app);
+}
