@@ -466,6 +466,12 @@ static int parse_entry(struct parser *p, struct dict *d, const struct token *kt,
     /* "key $sub;" copies a whole dictionary: the entry is a dictionary */
     if (v->u.l.n == 1 && v->u.l.items[0].kind == DICT_DICT)
         v = &v->u.l.items[0];
+    for (int i = 0; v->kind == DICT_ENTRY && i < v->u.l.n; i++)
+        if (v->u.l.items[i].kind == DICT_DICT) /* no syntax to write it */
+            return perr(p, v->u.l.items[i].line, v->u.l.items[i].col,
+                        "a dictionary cannot be one of several values of "
+                        "'%s' (put it in a list, or merge it with '$name;')",
+                        key);
     struct dict_entry *e = dict_put(d, key);
     if (!e)
         return SIM_ERR_NOMEM;

@@ -492,6 +492,8 @@ static void test_parse_errors(void **state)
                 "undefined variable '$s'");
     parse_fails("s { x 1; } $s", SIM_ERR_PARSE, "t.dict:1:14: ",
                 "expected ';' after '$s'");
+    parse_fails("p { a 1; }\nx w $p;", SIM_ERR_PARSE, "t.dict:2:5: ",
+                "a dictionary cannot be one of several values of 'x'");
     parse_fails("#calc \"1+1\";", SIM_ERR_PARSE, "t.dict:1:1: ",
                 "unsupported directive '#calc'");
     parse_fails("#include x;", SIM_ERR_PARSE, "t.dict:1:10: ",
