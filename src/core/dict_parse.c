@@ -210,6 +210,16 @@ static int resolve_var(struct parser *p, struct dict *d, const struct token *t,
     }
 }
 
+/* A substituted value is reported where the $var was written: that is the
+ * entry a getter asked for (its parts keep their own locations). */
+static void relocate(struct dict_value *v, const char *file,
+                     const struct token *t)
+{
+    v->file = file;
+    v->line = t->line;
+    v->col = t->col;
+}
+
 /* `$var` in a value: push copies of the referenced entry's values. */
 static int splice_var(struct parser *p, struct dict *d, const struct token *t,
                       const char *name)
@@ -223,6 +233,7 @@ static int splice_var(struct parser *p, struct dict *d, const struct token *t,
             return SIM_ERR_NOMEM;
         struct dict_value tmp;
         TRY(dict_value_copy(p->root, d, name, src, &tmp));
+        relocate(&tmp, p->lx->file, t);
         p->stack[p->sp - 1] = tmp;
         return SIM_OK;
     }
@@ -231,6 +242,7 @@ static int splice_var(struct parser *p, struct dict *d, const struct token *t,
             return SIM_ERR_NOMEM;
         struct dict_value tmp;
         TRY(dict_value_copy(p->root, d, name, &src->u.l.items[i], &tmp));
+        relocate(&tmp, p->lx->file, t);
         p->stack[p->sp - 1] = tmp;
     }
     return SIM_OK;
