@@ -16,6 +16,7 @@ void dem_init(struct dem *d)
     memset(d, 0, sizeof *d);
     nlist_init(&d->nl, 0);
     d->gravity[2] = -9.81;
+    d->omp_min = DEM_OMP_MIN;
 }
 
 void dem_free(struct dem *d)
@@ -265,7 +266,8 @@ double dem_contact_step(const struct dem *d)
 double dem_kinetic_energy(const struct dem *d)
 {
     double e = 0;
-    #pragma omp parallel for reduction(+ : e) schedule(static)
+    #pragma omp parallel for reduction(+ : e) schedule(static) \
+        if (d->n > DEM_OMP_MIN)
     for (size_t i = 0; i < d->n; i++) {
         double v2 = 0, w2 = 0;
         for (int a = 0; a < 3; a++) {

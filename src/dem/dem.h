@@ -91,6 +91,7 @@ struct dem {
     double dt_rayleigh;           /* eq. (38) for rmin [s]                  */
     /* time and book-keeping */
     double t;
+    size_t omp_min;               /* fewer grains: force loop on 1 thread */
     struct dem_coupling cpl;
     struct dem_stats stats;
 };

@@ -142,7 +142,7 @@ static int finish(struct dem *d, const double *v, const double *f,
             return rc;
     }
     int drag = c->drag && c->uf && c->eps;
-    #pragma omp parallel for schedule(static)
+    #pragma omp parallel for schedule(static) if (d->n > DEM_OMP_MIN)
     for (size_t i = 0; i < d->n; i++)
         for (int a = 0; a < 3; a++) {
             size_t k = 3 * i + a;
@@ -154,11 +154,18 @@ static int finish(struct dem *d, const double *v, const double *f,
     return SIM_OK;
 }
 
+static int n_small(const struct dem *d)
+{
+    return d->n <= d->omp_min;
+}
+
 int dem_forces(struct dem *d, double tm, const double *x, const double *v,
                const double *w, double tau, double *acc, double *alpha)
 {
     (void)tm;
-    int nth = omp_get_max_threads();
+    /* Small systems run on one thread: a parallel region costs more than
+     * the work (and much more on a loaded machine). */
+    int nth = n_small(d) ? 1 : omp_get_max_threads();
     size_t n = d->n, stride = 6 * n + 3 * DEM_MAX_PATCHES;
     TRY(reserve_buffers(d, nth));
     long nc = 0, nwc = 0;

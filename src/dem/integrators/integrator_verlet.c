@@ -47,7 +47,7 @@ static int verlet_create(struct dem *d, const struct dem_integrator_params *p,
 
 static void half_kick(struct dem *d, double h)
 {
-    #pragma omp parallel for schedule(static)
+    #pragma omp parallel for schedule(static) if (d->n > DEM_OMP_MIN)
     for (size_t k = 0; k < 3 * d->n; k++) {
         d->v[k] += h * d->acc[k];
         d->w[k] += h * d->alpha[k];
@@ -56,7 +56,7 @@ static void half_kick(struct dem *d, double h)
 
 static void drift(struct dem *d, double h)
 {
-    #pragma omp parallel for schedule(static)
+    #pragma omp parallel for schedule(static) if (d->n > DEM_OMP_MIN)
     for (size_t k = 0; k < 3 * d->n; k++)
         d->x[k] += h * d->v[k];
 }

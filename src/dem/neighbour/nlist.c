@@ -189,7 +189,8 @@ int nlist_build(struct dem_nlist *nl, size_t n, const double *x,
 double nlist_max_displacement(const struct dem_nlist *nl, const double *x)
 {
     double m2 = 0;
-    #pragma omp parallel for reduction(max : m2) schedule(static)
+    #pragma omp parallel for reduction(max : m2) schedule(static) \
+        if (nl->n > DEM_OMP_MIN)
     for (size_t i = 0; i < nl->n; i++) {
         double d2 = 0;
         for (int a = 0; a < 3; a++) {

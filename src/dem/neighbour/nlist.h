@@ -12,6 +12,9 @@
 #include <stddef.h>
 #include <stdint.h>
 
+/* Loops over fewer grains than this run on one thread. */
+#define DEM_OMP_MIN 2000
+
 struct dem_nlist {
     size_t n;          /* grains at the last build                       */
     size_t *start;     /* n + 1 row offsets                              */

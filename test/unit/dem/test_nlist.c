@@ -174,6 +174,7 @@ static void test_forces_vs_brute_force(void **state)
     for (size_t p = 0; p < 3 * d.nl.npairs; p++)
         d.hist[p] = 1e-7 * (urand(&s) - 0.5);
     double tau = 1e-6;
+    d.omp_min = 0;   /* exercise the threaded path */
     int nth = omp_get_max_threads();
     omp_set_num_threads(nth > 1 ? 2 : 1);
     assert_int_equal(dem_forces(&d, 0, d.x, d.v, d.w, tau, d.acc, d.alpha),
