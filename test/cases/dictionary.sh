@@ -9,7 +9,7 @@
 # plus -entry, -keys and -set checks. One line PASS/FAIL per check.
 set -u
 ROOT=$(cd "$(dirname "$0")/../.." && pwd)
-TOOL=$ROOT/bin/dictTool
+TOOL=${DICTTOOL:-$ROOT/bin/dictTool}   # DICTTOOL=bin-san/dictTool for the sanitizer build
 CORPUS=$ROOT/test/dictionary
 TMP=$(mktemp -d)
 trap 'rm -rf "$TMP"' EXIT
