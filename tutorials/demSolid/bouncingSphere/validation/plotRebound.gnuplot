@@ -1,7 +1,7 @@
 # gnuplot validation/plotRebound.gnuplot  (run in the case directory after
 # ./Allrun): height of the dropped bead above the floor minus its radius,
 # and the surface gap of the head-on pair, against time.
-set terminal pngcairo size 900,500
+set terminal png size 900,500
 set output 'validation/rebound.png'
 set xlabel 'time [s]'
 set ylabel 'gap [m]'
