@@ -49,12 +49,12 @@ int coupling_settings_read(const struct dict *d, struct coupling_settings *s)
     TRY(dict_get_scalar_or(d, "kernelRadius", 4.1, &s->radius));
     if (!(s->radius > 0) || !isfinite(s->radius))
         return dict_error(d, "kernelRadius", SIM_ERR_DICT,
-                          "coupling kernel radius %g (in units of dp) must "
-                          "be > 0", s->radius);
+                          "kernelRadius %g (coupling kernel radius in units "
+                          "of dp) must be > 0", s->radius);
     TRY(dict_get_scalar_or(d, "porosityMin", 0.3, &s->eps_min));
     if (!(s->eps_min > 0 && s->eps_min < 1))
         return dict_error(d, "porosityMin", SIM_ERR_DICT,
-                          "porosity floor %g must lie in (0, 1)",
+                          "porosityMin %g must lie in (0, 1)",
                           s->eps_min);
     return SIM_OK;
 }

@@ -1,0 +1,353 @@
+/* test_reaction.c — the drag averaged over DEM sub-steps and its reaction
+ * on the fluid (eq. 36), E1-13 (sum_i V_i f_A,i = sum_k F_bar_k to 1e-12
+ * relative on random configurations, every step of a small MSS loop), and
+ * the Model A / B terms of models.h: grain forces (34)/(35), prediction
+ * accelerations, PPE and correction factors, couplingDict settings and the
+ * run-time guards. */
+#include <setjmp.h>
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdint.h>
+#include <cmocka.h>
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "core/dict.h"
+#include "core/error.h"
+#include "core/log.h"
+#include "coupling/drag/drag.h"
+#include "coupling/interp.h"
+#include "coupling/models.h"
+#include "coupling/pairs.h"
+#include "coupling/porosity.h"
+#include "coupling/reaction.h"
+
+static uint64_t rng_state = 4242;
+static double urand(void)
+{
+    rng_state ^= rng_state << 13;
+    rng_state ^= rng_state >> 7;
+    rng_state ^= rng_state << 17;
+    return (rng_state >> 11) * (1.0 / 9007199254740992.0);
+}
+
+static void test_drag_mean(void **state)
+{
+    (void)state;
+    struct coupling_drag_mean M = { 0 };
+    assert_int_equal(coupling_drag_mean_init(&M, 3), 0);
+    double F[9], mean[9];
+    assert_int_equal(coupling_drag_mean_get(&M, mean), SIM_ERR_INPUT);
+    sim_error_clear();
+    for (int s = 1; s <= 100; s++) {
+        for (int e = 0; e < 9; e++)
+            F[e] = s * (e + 1.0);
+        coupling_drag_mean_add(&M, F);
+    }
+    assert_int_equal(coupling_drag_mean_get(&M, mean), 0);
+    for (int e = 0; e < 9; e++)   /* mean of s over 1..100 = 50.5 */
+        assert_true(mean[e] == 50.5 * (e + 1.0));
+    coupling_drag_mean_reset(&M);
+    assert_int_equal(M.count, 0);
+    assert_int_equal(coupling_drag_mean_init(&M, 10), 0);   /* grows */
+    assert_int_equal(M.n, 10);
+    coupling_drag_mean_free(&M);
+}
+
+/* Relative momentum error |sum_i V_i f_A,i - sum_k F_k| / sum_k |F_k|
+ * over the grains that have a share-taker. */
+static double momentum_error(struct coupling_pairs *P, const uint8_t *mask,
+                             const double *F, double Vp, double *fA,
+                             int *orphans)
+{
+    assert_int_equal(coupling_reaction(P, mask, F, Vp, fA, orphans), 0);
+    double sf[3] = { 0, 0, 0 }, sk[3] = { 0, 0, 0 }, scale = 0;
+    for (int i = 0; i < P->np; i++)
+        for (int c = 0; c < 3; c++) {
+            sf[c] += Vp * fA[3 * i + c];
+            if (mask && !mask[i])
+                assert_true(fA[3 * i + c] == 0);
+        }
+    for (int k = 0; k < P->ng; k++) {
+        int wet = 0;
+        for (int64_t e = P->gstart[k]; e < P->gstart[k + 1]; e++)
+            wet |= !mask || mask[P->gj[e]];
+        for (int c = 0; c < 3; c++) {
+            scale += fabs(F[3 * k + c]);
+            if (wet)
+                sk[c] += F[3 * k + c];
+        }
+    }
+    double err = 0;
+    for (int c = 0; c < 3; c++)
+        err = fmax(err, fabs(sf[c] - sk[c]));
+    return err / scale;
+}
+
+/* E1-13 on random configurations, 3-D and 2-D, with and without a mask,
+ * with a grain that has no particle in reach. */
+static void test_momentum_identity(void **state)
+{
+    (void)state;
+    enum { NG = 300, NP = 8000 };
+    static double xg[3 * NG], xp[3 * NP], F[3 * NG], fA[3 * NP];
+    static uint8_t mask[NP];
+    double worst = 0;
+    for (int seed = 0; seed < 6; seed++) {
+        int dim = seed % 2 ? 2 : 3;
+        memset(xg, 0, sizeof xg);
+        memset(xp, 0, sizeof xp);
+        for (int k = 0; k < NG; k++)
+            for (int c = 0; c < dim; c++) {
+                xg[3 * k + c] = 0.05 * urand();
+                F[3 * k + c] = (urand() - 0.5) * pow(10, 4 * urand() - 6);
+            }
+        xg[0] = 9.0;   /* orphan */
+        for (int i = 0; i < NP; i++) {
+            for (int c = 0; c < dim; c++)
+                xp[3 * i + c] = 0.06 * urand() - 0.005;
+            mask[i] = urand() < 0.8;
+        }
+        struct coupling_pairs P = { 0 };
+        assert_int_equal(coupling_pairs_build(&P, dim, 0.011, NG, xg, NP, xp),
+                         0);
+        int orphans = -1;
+        double Vp = dim == 3 ? pow(2.7e-3, 3) : pow(2.7e-3, 2);
+        double e1 = momentum_error(&P, NULL, F, Vp, fA, &orphans);
+        assert_int_equal(orphans, 1);
+        double e2 = momentum_error(&P, mask, F, Vp, fA, &orphans);
+        assert_true(orphans >= 1);
+        worst = fmax(worst, fmax(e1, e2));
+        assert_true(e1 < 1e-12 && e2 < 1e-12);
+        coupling_pairs_free(&P);
+    }
+    print_message("E1-13 worst relative momentum error %.2e (6 random "
+                  "configurations, 300 grains, 8000 particles)\n", worst);
+    assert_int_equal(coupling_reaction(&(struct coupling_pairs){ 0 }, NULL,
+                                       F, 0.0, fA, NULL), SIM_ERR_INPUT);
+    sim_error_clear();
+}
+
+/* E1-13 "every step" in a small MSS loop: grains relax towards the frozen
+ * fluid velocity over N_sub sub-steps (drag at every sub-step with the
+ * current v, A.8), the mean drag goes back to the fluid, and the fluid
+ * momentum gained equals the grain momentum lost, step after step. */
+static void test_mss_loop(void **state)
+{
+    (void)state;
+    enum { NG = 40, NP = 6000, NSUB = 100 };
+    static double xg[3 * NG], vg[3 * NG], xp[3 * NP], up[3 * NP];
+    static double epsp[NP], fA[3 * NP], F[3 * NG], Fbar[3 * NG];
+    static double ek[NG], uk[3 * NG], dg[NG], Vg[NG];
+    static uint8_t wet[NG];
+    const struct drag_fluid water = { 1000, 1e-3 };
+    const double dp = 2.7e-3, Vp = dp * dp * dp, dt = 1e-4;
+    for (int i = 0; i < NP; i++)
+        for (int c = 0; c < 3; c++) {
+            xp[3 * i + c] = 0.05 * urand();
+            up[3 * i + c] = c == 0 ? 0.2 : 0.0;
+        }
+    for (int k = 0; k < NG; k++) {
+        for (int c = 0; c < 3; c++) {
+            xg[3 * k + c] = 0.01 + 0.03 * urand();
+            vg[3 * k + c] = 0.0;
+        }
+        dg[k] = 2.7e-3;
+        Vg[k] = M_PI * pow(dg[k], 3) / 6;
+    }
+    struct coupling_pairs P = { 0 };
+    struct coupling_drag_mean M = { 0 };
+    struct coupling_grain_fields G = { ek, uk, NULL, wet };
+    assert_int_equal(coupling_drag_mean_init(&M, NG), 0);
+    for (int step = 0; step < 5; step++) {
+        assert_int_equal(coupling_pairs_build(&P, 3, 4.1 * dp, NG, xg, NP,
+                                              xp), 0);
+        assert_int_equal(coupling_porosity(&P, Vg, 0.3, epsp, NULL, NULL), 0);
+        coupling_interp_grains(&P, NULL, epsp, up, NULL, &G);
+        double p0[3] = { 0, 0, 0 }, p1[3] = { 0, 0, 0 };
+        for (int k = 0; k < NG; k++)
+            for (int c = 0; c < 3; c++)
+                p0[c] += 2500 * Vg[k] * vg[3 * k + c];
+        coupling_drag_mean_reset(&M);
+        for (int s = 0; s < NSUB; s++) {
+            drag_ergun_wen_yu.force_all(&water, NG, ek, dg, Vg, uk, vg, F);
+            coupling_drag_mean_add(&M, F);
+            for (int k = 0; k < NG; k++)
+                for (int c = 0; c < 3; c++) {
+                    vg[3 * k + c] += dt / NSUB * F[3 * k + c] / (2500 * Vg[k]);
+                    xg[3 * k + c] += dt / NSUB * vg[3 * k + c];
+                }
+        }
+        assert_int_equal(coupling_drag_mean_get(&M, Fbar), 0);
+        assert_int_equal(coupling_pairs_build(&P, 3, 4.1 * dp, NG, xg, NP,
+                                              xp), 0);
+        int orphans = -1;
+        assert_int_equal(coupling_reaction(&P, NULL, Fbar, Vp, fA, &orphans),
+                         0);
+        assert_int_equal(orphans, 0);
+        double pf[3] = { 0, 0, 0 };
+        for (int i = 0; i < NP; i++)
+            for (int c = 0; c < 3; c++)
+                pf[c] -= dt * Vp * fA[3 * i + c];   /* fluid gains -f_A */
+        for (int k = 0; k < NG; k++)
+            for (int c = 0; c < 3; c++)
+                p1[c] += 2500 * Vg[k] * vg[3 * k + c];
+        for (int c = 0; c < 3; c++) {
+            double dg_ = p1[c] - p0[c];
+            assert_true(fabs(pf[c] + dg_) <= 1e-12 * fmax(fabs(dg_), 1e-30));
+        }
+        assert_true(p1[0] > p0[0]);   /* the grains were dragged along x */
+    }
+    coupling_drag_mean_free(&M);
+    coupling_pairs_free(&P);
+}
+
+static void test_grain_force(void **state)
+{
+    (void)state;
+    const double g[3] = { 0, 0, -9.81 }, rho = 1000;
+    double Fd[6] = { 1e-4, -2e-4, 3e-4, 5e-5, 0, 0 }, eps[2] = { 0.6, 0.9 };
+    double gp[6] = { 10, 20, -9810, 1, 2, 3 }, V[2] = { 1e-8, 2e-8 };
+    uint8_t wet[2] = { 1, 0 };
+    double F[6];
+    coupling_grain_force(COUPLING_MODEL_A, 2, Fd, eps, gp, V, rho, g, NULL,
+                         F);
+    for (int e = 0; e < 6; e++)
+        assert_true(F[e] == Fd[e] - V[e / 3] * gp[e]);
+    coupling_grain_force(COUPLING_MODEL_B, 2, Fd, eps, NULL, V, rho, g, wet,
+                         F);
+    for (int c = 0; c < 3; c++) {
+        assert_true(F[c] == Fd[c] / eps[0] - V[0] * rho * g[c]);
+        assert_true(F[3 + c] == 0.0);   /* dry grain */
+    }
+    /* Model B buoyancy of the Table 1 bead: V rho_f g = 1.011026e-4 N */
+    double Vb = M_PI * pow(2.7e-3, 3) / 6, z[3] = { 0, 0, 0 }, one = 1;
+    coupling_grain_force(COUPLING_MODEL_B, 1, z, &one, NULL, &Vb, rho, g,
+                         NULL, F);
+    assert_true(fabs(F[2] - 1.011026e-4) < 1e-9);
+}
+
+/* Hydrostatics stays at rest in a fixed bed (f_A = 0, grad P = rho g) for
+ * both models; Model A's fluid-side exchange is exactly -sum F_bar. */
+static void test_mps_terms(void **state)
+{
+    (void)state;
+    enum { NP = 1000 };
+    static double eps[NP], fA[3 * NP], a[3 * NP], s[NP], c[NP];
+    const double g[3] = { 0, 0, -9.81 }, rho = 1000;
+    for (int i = 0; i < NP; i++) {
+        eps[i] = 0.3 + 0.7 * urand();
+        for (int q = 0; q < 3; q++)
+            fA[3 * i + q] = 0.0;
+    }
+    for (int m = COUPLING_MODEL_A; m <= COUPLING_MODEL_B; m++) {
+        coupling_mps_accel(m, NP, eps, fA, rho, g, NULL, a);
+        coupling_ppe_source_factor(m, NP, eps, s);
+        coupling_correction_factor(m, NP, eps, c);
+        for (int i = 0; i < NP; i++) {
+            for (int q = 0; q < 3; q++) {
+                double gradp = rho * g[q];
+                double dudt = g[q] + a[3 * i + q] - c[i] * gradp / rho;
+                assert_true(fabs(dudt) <= 1e-14 * 9.81 / eps[i]);
+            }
+            assert_true(s[i] == (m == COUPLING_MODEL_A ? 1.0 : eps[i]));
+            assert_true(c[i] == (m == COUPLING_MODEL_A ? 1.0 : 1 / eps[i]));
+        }
+    }
+    /* drag reaction: A: sum rho eps V a = -sum V f_A, exactly */
+    double sf = 0, sa = 0, Vp = 1e-8;
+    for (int i = 0; i < NP; i++)
+        for (int q = 0; q < 3; q++)
+            fA[3 * i + q] = urand() - 0.5;
+    coupling_mps_accel(COUPLING_MODEL_A, NP, eps, fA, rho, g, NULL, a);
+    for (int i = 0; i < NP; i++) {
+        sf += Vp * fA[3 * i];
+        sa += rho * eps[i] * Vp * a[3 * i];
+    }
+    assert_true(fabs(sa + sf) <= 1e-12 * fabs(sf));
+    /* B: a = -f_A/(rho eps^2) + g (1/eps - 1), per particle */
+    coupling_mps_accel(COUPLING_MODEL_B, NP, eps, fA, rho, g, NULL, a);
+    for (int i = 0; i < NP; i++)
+        for (int q = 0; q < 3; q++) {
+            double ex = -fA[3 * i + q] / (rho * eps[i] * eps[i]) +
+                        g[q] * (1 / eps[i] - 1);
+            assert_true(fabs(a[3 * i + q] - ex) <= 1e-13 * (fabs(ex) + 1));
+        }
+    /* rows: untouched outside */
+    uint8_t rows[2] = { 0, 1 };
+    double a2[6] = { 7, 7, 7, 7, 7, 7 };
+    coupling_mps_accel(COUPLING_MODEL_A, 2, eps, fA, rho, g, rows, a2);
+    assert_true(a2[0] == 7 && a2[3] != 7);
+}
+
+static int read_settings(const char *text, struct coupling_settings *s)
+{
+    struct dict *d;
+    assert_int_equal(dict_read_string(text, strlen(text),
+                                      "system/couplingDict", &d), 0);
+    int rc = coupling_settings_read(d, s);
+    dict_free(d);
+    return rc;
+}
+
+static void test_settings(void **state)
+{
+    (void)state;
+    log_set_quiet(1);
+    struct coupling_settings s;
+    assert_int_equal(read_settings("coupled yes;\n", &s), 0);
+    assert_int_equal(s.model, COUPLING_MODEL_B);
+    assert_ptr_equal(s.drag, &drag_ergun_wen_yu);
+    assert_true(s.radius == 4.1 && s.eps_min == 0.3);
+    assert_int_equal(read_settings("model A; dragModel gidaspowBlend;\n"
+                                   "kernelRadius 3.0; porosityMin 0.25;\n",
+                                   &s), 0);
+    assert_int_equal(s.model, COUPLING_MODEL_A);
+    assert_ptr_equal(s.drag, &drag_gidaspow_blend);
+    assert_true(s.radius == 3.0 && s.eps_min == 0.25);
+    assert_int_equal(read_settings("model C;\n", &s), SIM_ERR_DICT);
+    assert_non_null(strstr(sim_error_message(), "system/couplingDict:1"));
+    assert_int_equal(read_settings("kernelRadius -1;\n", &s), SIM_ERR_DICT);
+    assert_non_null(strstr(sim_error_message(), "kernelRadius"));
+    assert_int_equal(read_settings("\nporosityMin 1.5;\n", &s),
+                     SIM_ERR_DICT);
+    assert_non_null(strstr(sim_error_message(), "system/couplingDict:2"));
+    sim_error_clear();
+    log_set_quiet(0);
+}
+
+static void test_guards(void **state)
+{
+    (void)state;
+    double d[3] = { 2.7e-3, 5e-3, 1e-3 };
+    long w0 = log_warning_count();
+    assert_int_equal(coupling_guard_grain_size(3, d, 4.1 * 2.7e-3), 1);
+    assert_int_equal(coupling_guard_grain_size(3, d, 0.1), 0);
+    /* relaxation time rho_s/K: a 10 um grain relaxes in well under the
+     * 1e-4 s fluid step, a 2.7 mm one does not */
+    const struct drag_fluid w = { 1000, 1e-3 };
+    double e[2] = { 1, 1 }, u[6] = { 0.1, 0, 0, 0.1, 0, 0 }, v[6] = { 0 };
+    double dg[2] = { 1e-5, 2.7e-3 }, tmin;
+    assert_int_equal(coupling_guard_relaxation(&drag_ergun_wen_yu, &w, 2, e,
+                                               u, v, dg, 2500, 1e-4, &tmin),
+                     1);
+    /* Stokes: tau = rho_s d^2/(18 mu (1 + 0.15 Re^0.687)), Re = 1 */
+    double tau = 2500 * 1e-10 / (18e-3 * (1 + 0.15));
+    assert_true(fabs(tmin / tau - 1) < 1e-12);
+    assert_int_equal(log_warning_count() - w0, 2);
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_drag_mean),
+        cmocka_unit_test(test_momentum_identity),
+        cmocka_unit_test(test_mss_loop),
+        cmocka_unit_test(test_grain_force),
+        cmocka_unit_test(test_mps_terms),
+        cmocka_unit_test(test_settings),
+        cmocka_unit_test(test_guards),
+    };
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}
