@@ -383,7 +383,10 @@ static int handshake(struct channel *c)
                   c->set.timeout, "peer program attached to the channel"));
     TRY(chan_watch_peer(c));
     TRY(compare_agreement(c));
-    TRY(chan_check_peer(c));
+    /* a peer that already closed normally did its part of the handshake
+     * (and may have sent frames we still have to read) */
+    if (atomic_load(&peer->state) != SIDE_CLOSED)
+        TRY(chan_check_peer(c));
     uint64_t nslots = me->nslots_req > peer->nslots_req ? me->nslots_req
                                                           : peer->nslots_req;
     uint64_t cap = me->slot_bytes_req > peer->slot_bytes_req

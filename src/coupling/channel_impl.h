@@ -96,6 +96,9 @@ struct channel {
     char peer_program[64];
     uint64_t hung_ns;           /* heartbeat silence that means "hung"     */
     int peer_hung;              /* we gave up on a live but silent peer    */
+    uint64_t beat_seen;         /* peer heartbeat value last seen ...      */
+    uint64_t beat_seen_at;      /* ... since this local time [ns]          */
+    uint64_t last_check;        /* time of our previous peer check [ns]    */
     /* frame reserved by send_begin, waiting for commit */
     struct channel_frame *pending;
     /* frame exposed by recv, waiting for recv_done */

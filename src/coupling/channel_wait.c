@@ -105,6 +105,24 @@ static int peer_left(struct channel *c, int state)
                      (int)c->peer_pid, sim_strerror(code));
 }
 
+/* Silence is counted on our own clock while we keep checking: when our
+ * checks were far apart (we computed, or the whole tandem was suspended
+ * with Ctrl-Z and resumed), the count starts again, so that only a peer
+ * that stays silent while we watch is declared hung. */
+static int peer_silent(struct channel *c, uint64_t beat)
+{
+    uint64_t now = chan_now_ns();
+    int away = now - c->last_check > c->hung_ns / 4;
+
+    c->last_check = now;
+    if (beat != c->beat_seen || away) {
+        c->beat_seen = beat;
+        c->beat_seen_at = now;
+        return 0;
+    }
+    return now - c->beat_seen_at > c->hung_ns;
+}
+
 int chan_check_peer(struct channel *c)
 {
     const struct chan_side *p = &c->hdr->side[c->peer];
@@ -121,13 +139,13 @@ int chan_check_peer(struct channel *c)
                              "without closing the channel (killed or "
                              "crashed)", c->set.program, c->peer_program,
                              (int)c->peer_pid);
-        uint64_t beat = atomic_load(&p->heartbeat_ns), now = chan_now_ns();
-        if (beat && now > beat && now - beat > c->hung_ns) {
+        if (peer_silent(c, atomic_load(&p->heartbeat_ns))) {
             c->peer_hung = 1;
             return sim_error(SIM_ERR_PEER, "%s: peer %s (pid %d) sent no "
                              "heartbeat for %.1f s: it is stopped or hung",
                              c->set.program, c->peer_program,
-                             (int)c->peer_pid, (double)(now - beat) * 1e-9);
+                             (int)c->peer_pid,
+                             (double)(chan_now_ns() - c->beat_seen_at) * 1e-9);
         }
     }
     return SIM_OK;

@@ -331,8 +331,10 @@ static int send_two_and_close(void *arg)
     struct channel *c;
     double x = 42.0;
     test_settings(&s, CHANNEL_SOLID, arg);
-    if (channel_open(&s, &c))
+    if (channel_open(&s, &c)) {
+        fprintf(stderr, "child: %s\n", sim_error_message());
         return 2;
+    }
     for (int k = 0; k < 2; k++) {
         struct channel_frame f = { .kind = 1, .step = (uint64_t)k,
                                    .bytes = sizeof x };

@@ -117,6 +117,44 @@ static void test_signal_ends_wait(void **state)
     assert_false(segment_exists(name));
 }
 
+/* A program that never checks for signals: the first SIGTERM is only
+ * recorded; a second one, a second later, unlinks the segment name and
+ * terminates it. */
+static int deaf_peer(void *arg)
+{
+    struct channel_settings s;
+    struct channel *c;
+    channel_signals_install();
+    test_settings(&s, CHANNEL_SOLID, arg);
+    if (channel_open(&s, &c))
+        return 2;
+    for (;;)
+        sleep_s(0.05);
+}
+
+static void test_second_signal_unlinks_and_kills(void **state)
+{
+    char name[64];
+    struct channel_settings s;
+    struct channel *c;
+    struct channel_frame f;
+    const void *data;
+    (void)state;
+    unique_name(name, sizeof name);
+    pid_t pid = spawn(deaf_peer, name);
+    test_settings(&s, CHANNEL_FLUID, name);
+    assert_int_equal(channel_open(&s, &c), SIM_OK);
+    kill(pid, SIGTERM);
+    sleep_s(1.2);
+    assert_int_equal(waitpid(pid, NULL, WNOHANG), 0);  /* still running */
+    assert_true(segment_exists(name));
+    kill(pid, SIGTERM);
+    assert_int_equal(reap(pid), 128 + SIGTERM);
+    assert_false(segment_exists(name));                /* it unlinked it */
+    assert_int_equal(channel_recv(c, &f, &data), SIM_ERR_PEER);
+    assert_int_equal(channel_close(c, SIM_ERR_PEER), SIM_OK);
+}
+
 /* ---- peers for the cases below -------------------------------------------- */
 
 struct peer { const char *name; int side; double sleep; int action; };
@@ -384,6 +422,7 @@ int main(void)
         cmocka_unit_test(test_handshake_mismatch),
         cmocka_unit_test(test_timeout_without_peer),
         cmocka_unit_test(test_signal_ends_wait),
+        cmocka_unit_test(test_second_signal_unlinks_and_kills),
         cmocka_unit_test(test_peer_killed_while_receiving),
         cmocka_unit_test(test_peer_killed_while_sending),
         cmocka_unit_test(test_peer_stopped_is_hung),

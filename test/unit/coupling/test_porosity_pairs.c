@@ -9,11 +9,13 @@
 #include <stdint.h>
 #include <cmocka.h>
 #include <math.h>
+#include <omp.h>
 #include <stdlib.h>
 #include <string.h>
 
 #include "core/error.h"
 #include "coupling/pairs.h"
+#include "coupling/porosity.h"
 
 static uint64_t rng_state = 99;
 static double urand(void)
@@ -129,11 +131,42 @@ static void test_bad_grain(void **state)
     coupling_pairs_free(&P);
 }
 
+/* The build and the sums over it do not depend on the thread count. */
+static void test_threads(void **state)
+{
+    (void)state;
+    enum { NG = 400, NP = 20000 };
+    static double xg[3 * NG], xp[3 * NP], V[NG], e1[NP], e2[NP];
+    for (int k = 0; k < 3 * NG; k++)
+        xg[k] = 0.05 * urand();
+    for (int k = 0; k < NG; k++)
+        V[k] = 1e-8;
+    for (int i = 0; i < 3 * NP; i++)
+        xp[i] = 0.06 * urand();
+    struct coupling_pairs A = { 0 }, B = { 0 };
+    int nt = omp_get_max_threads();
+    omp_set_num_threads(1);
+    assert_int_equal(coupling_pairs_build(&A, 3, 0.011, NG, xg, NP, xp), 0);
+    assert_int_equal(coupling_porosity(&A, V, 0.3, e1, NULL, NULL), 0);
+    omp_set_num_threads(nt > 1 ? nt : 2);
+    assert_int_equal(coupling_pairs_build(&B, 3, 0.011, NG, xg, NP, xp), 0);
+    assert_int_equal(coupling_porosity(&B, V, 0.3, e2, NULL, NULL), 0);
+    omp_set_num_threads(nt);
+    assert_int_equal(A.npair, B.npair);
+    assert_memory_equal(A.gstart, B.gstart, (NG + 1) * sizeof(int64_t));
+    assert_memory_equal(A.gj, B.gj, A.npair * sizeof(int32_t));
+    assert_memory_equal(A.gw, B.gw, A.npair * sizeof(double));
+    assert_memory_equal(e1, e2, sizeof e1);
+    coupling_pairs_free(&A);
+    coupling_pairs_free(&B);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_against_brute),
         cmocka_unit_test(test_bad_grain),
+        cmocka_unit_test(test_threads),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
