@@ -168,7 +168,7 @@ static int decode(const struct reader *r, const struct array *a,
  * its own, padded (what we and VTK write), or together with the data: a
  * padded header group tells the two apart. */
 static int decode_binary(const struct reader *r, const struct array *a,
-                         char *b64, size_t len, unsigned char **bytes,
+                         const char *b64, size_t len, unsigned char **bytes,
                          size_t *nbytes)
 {
     size_t hs = r->header_size, hchars = b64_encoded_len(hs), got;
@@ -217,13 +217,26 @@ static int parse_binary(const struct reader *r, const struct array *a,
 {
     size_t want = a->count * src_sizes[a->src], len, nbytes = 0;
     unsigned char *bytes = NULL;
-    char *b64, msg[128];
+    char *copy = NULL, msg[128];
+    const char *b64;
     int rc;
 
-    b64 = sim_malloc(strlen(text) + 1);
-    if (!b64)
-        return SIM_ERR_NOMEM;
-    len = strip_space(text, b64);
+    /* Our files have no whitespace inside the base64, except around it:
+     * then decode in place instead of copying. */
+    while (isspace((unsigned char)*text))
+        text++;
+    len = strlen(text);
+    while (len > 0 && isspace((unsigned char)text[len - 1]))
+        len--;
+    if (strcspn(text, " \t\r\n\v\f") >= len) {
+        b64 = text;
+    } else {
+        copy = sim_malloc(len + 1);
+        if (!copy)
+            return SIM_ERR_NOMEM;
+        len = strip_space(text, copy);
+        b64 = copy;
+    }
     TRY_GOTO(rc, decode_binary(r, a, b64, len, &bytes, &nbytes), out);
     if (nbytes != want) {
         snprintf(msg, sizeof msg, "holds %zu bytes, but NumberOfPoints and "
@@ -241,7 +254,7 @@ static int parse_binary(const struct reader *r, const struct array *a,
         memcpy(out, bytes, nbytes);
     }
 out:
-    free(b64);
+    free(copy);
     free(bytes);
     return rc;
 }
