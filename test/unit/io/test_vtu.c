@@ -399,6 +399,26 @@ static void test_corrupted(void **state)
     expect_bad(0, ascii_overflow, "is not a valid UInt8");
 }
 
+/* Entity expansion is refused outright: no DOCTYPE in our files. */
+static void test_doctype_refused(void **state)
+{
+    static const char lol[] =
+        "<?xml version=\"1.0\"?>\n<!DOCTYPE l [ <!ENTITY a \"aaaaaaaa\">"
+        "<!ENTITY b \"&a;&a;&a;&a;&a;&a;&a;&a;\"> ]>\n<VTKFile type=\""
+        "UnstructuredGrid\"><UnstructuredGrid><Piece NumberOfPoints=\"1\">"
+        "<Points><DataArray type=\"Float64\" NumberOfComponents=\"3\" "
+        "format=\"ascii\">&b;</DataArray></Points></Piece>"
+        "</UnstructuredGrid></VTKFile>\n";
+    struct vtu_cloud r;
+    char path[128];
+    (void)state;
+    path_in(path, sizeof path, "lol.vtu");
+    spit(path, lol, strlen(lol));
+    assert_int_equal(vtu_read(path, &r), SIM_ERR_IO);
+    assert_non_null(strstr(sim_error_message(), "<!DOCTYPE>"));
+    assert_int_equal(pvd_add(path, 0, "x.vtu"), SIM_ERR_IO);
+}
+
 static void test_missing_file(void **state)
 {
     struct vtu_cloud r;
@@ -546,6 +566,7 @@ int main(void)
         cmocka_unit_test(test_foreign_variants),
         cmocka_unit_test(test_truncated),
         cmocka_unit_test(test_corrupted),
+        cmocka_unit_test(test_doctype_refused),
         cmocka_unit_test(test_missing_file),
         cmocka_unit_test(test_failed_write_cleans_up),
         cmocka_unit_test(test_add_field_checks),
