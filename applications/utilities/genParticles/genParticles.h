@@ -39,6 +39,7 @@ struct region {
     long seed;              /* grains: jitter seed                       */
     enum lattice_kind lattice; /* grains                                 */
     /* filled in by the generator */
+    double clo[3], chi[3];  /* box outside which it claims no site [m]   */
     size_t count[4];        /* fluid, wall, dummy, grains                */
     double top;             /* fluid: highest particle + dp/2 [m]        */
 };

@@ -95,6 +95,9 @@ static int classify(const struct gen_case *c, const double x[3], int *type,
 
     for (int i = c->nregions - 1; i >= 0; i--) {
         const struct region *r = &c->r[i];
+        if (x[0] < r->clo[0] || x[0] > r->chi[0] || x[1] < r->clo[1] ||
+            x[1] > r->chi[1] || x[2] < r->clo[2] || x[2] > r->chi[2])
+            continue; /* cheap rejection before any distance */
         switch (r->type) {
         case REGION_GRAINS:
             continue;
@@ -222,6 +225,23 @@ static int check_counts(const struct gen_case *c, int grains)
     return SIM_OK;
 }
 
+/* The box of the sites each region may claim: its bounding box, grown by
+ * the wall layers for a tank (and a little for round-off). */
+static void claim_boxes(struct gen_case *c)
+{
+    for (int i = 0; i < c->nregions; i++) {
+        struct region *r = &c->r[i];
+        double grow = 1e-6 * c->dp;
+        if (r->type == REGION_TANK_WALL)
+            grow += c->layers * c->dp;
+        geom_bbox(&r->g, r->clo, r->chi);
+        for (int d = 0; d < 3; d++) {
+            r->clo[d] -= grow;
+            r->chi[d] += grow;
+        }
+    }
+}
+
 int gen_mps(struct gen_case *c, struct mps_cloud *m)
 {
     struct lattice l = { LATTICE_CUBIC, c->dim,
@@ -233,6 +253,7 @@ int gen_mps(struct gen_case *c, struct mps_cloud *m)
         any |= c->r[i].type != REGION_GRAINS;
     if (!any)
         return SIM_OK;
+    claim_boxes(c);
     TRY(lattice_fill(&l, c->lo, c->hi, accept_site, c, &m->x, &m->n));
     TRY(alloc_mps(m));
     fill_mps_fields(c, m);
