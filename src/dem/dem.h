@@ -91,6 +91,9 @@ struct dem {
     double dt_rayleigh;           /* eq. (38) for rmin [s]                  */
     /* time and book-keeping */
     double t;
+    double h_next;                /* adaptive step to start with, 0: estimate;
+                                     saved at writes so a restart repeats the
+                                     continuous run */
     size_t omp_min;               /* fewer grains: force loop on 1 thread */
     struct dem_coupling cpl;
     struct dem_stats stats;

@@ -130,45 +130,104 @@ static int erk_table_known(const char *name)
 
 static const char *const action_words[] = {"refuse", "relax", NULL};
 
+/* Keys of sub-dictionary `sub` of d: read them in the sub-dictionary when
+ * it exists (so that a misspelt key gets a "did you mean" suggestion),
+ * else as scoped keys of d (defaults are then recorded under that name). */
+struct scope {
+    const struct dict *d;
+    const char *prefix;
+    char buf[128];
+};
+
+static int scope_open(const struct dict *d, const char *sub, struct scope *s)
+{
+    const struct dict *sd = NULL;
+    TRY(dict_find_dict(d, sub, &sd));
+    s->d = sd ? sd : d;
+    s->prefix = sd ? "" : sub;
+    return SIM_OK;
+}
+
+static const char *key(struct scope *s, const char *name)
+{
+    snprintf(s->buf, sizeof s->buf, "%s%s%s", s->prefix,
+             s->prefix[0] ? "/" : "", name);
+    return s->buf;
+}
+
 static int read_arkode(const struct dict *sol, struct dem *d,
                        struct dem_solution *s)
 {
     struct dem_integrator_params *p = &s->params;
     const char *table;
     double vref = sqrt(9.81 * fmax(d->rmax, 1e-6));
-    TRY(dict_get_scalar_or(sol, "arkodeCoeffs/rtol", 1e-4, &p->rtol));
-    TRY(dict_get_scalar_or(sol, "arkodeCoeffs/atolPosition",
-                           1e-4 * d->rmin, &p->atol_x));
-    TRY(dict_get_scalar_or(sol, "arkodeCoeffs/atolVelocity", 1e-4 * vref,
+    struct scope a;
+    TRY(scope_open(sol, "arkodeCoeffs", &a));
+    TRY(dict_get_scalar_or(a.d, key(&a, "rtol"), 1e-4, &p->rtol));
+    TRY(dict_get_scalar_or(a.d, key(&a, "atolPosition"), 1e-4 * d->rmin,
+                           &p->atol_x));
+    TRY(dict_get_scalar_or(a.d, key(&a, "atolVelocity"), 1e-4 * vref,
                            &p->atol_v));
-    TRY(dict_get_scalar_or(sol, "arkodeCoeffs/atolOmega",
+    TRY(dict_get_scalar_or(a.d, key(&a, "atolOmega"),
                            1e-4 * vref / fmax(d->rmin, 1e-9), &p->atol_w));
-    TRY(dict_get_scalar_or(sol, "arkodeCoeffs/stabilitySafety", 0.5,
+    TRY(dict_get_scalar_or(a.d, key(&a, "stabilitySafety"), 0.5,
                            &p->safety));
-    TRY(dict_get_string_or(sol, "arkodeCoeffs/table", "DORMAND_PRINCE_7_4_5",
+    TRY(dict_get_string_or(a.d, key(&a, "table"), "DORMAND_PRINCE_7_4_5",
                            &table));
     snprintf(s->table, sizeof s->table, "ARKODE_%s", table);
     p->table = s->table;
     if (!erk_table_known(s->table))
-        return dict_error(sol, "arkodeCoeffs/table", SIM_ERR_DICT,
+        return dict_error(a.d, key(&a, "table"), SIM_ERR_DICT,
                           "unknown ERK table '%s'; valid: %s", table,
                           DEM_ERK_TABLE_NAMES);
     long ms;
-    TRY(dict_get_label_or(sol, "arkodeCoeffs/maxSteps", 100000000L, &ms));
+    TRY(dict_get_label_or(a.d, key(&a, "maxSteps"), 100000000L, &ms));
     p->max_steps = ms;
     const char *bad = !(p->rtol > 0) ? "rtol"
                       : !(p->atol_x > 0) ? "atolPosition"
                       : !(p->atol_v > 0) ? "atolVelocity"
                       : !(p->atol_w > 0) ? "atolOmega" : NULL;
-    if (bad) {
-        char key[64];
-        snprintf(key, sizeof key, "arkodeCoeffs/%s", bad);
-        return dict_error(sol, key, SIM_ERR_DICT, "%s must be > 0", bad);
-    }
+    if (bad)
+        return dict_error(a.d, key(&a, bad), SIM_ERR_DICT, "%s must be > 0",
+                          bad);
     if (!(p->safety > 0 && p->safety < 1))
-        return dict_error(sol, "arkodeCoeffs/stabilitySafety", SIM_ERR_DICT,
+        return dict_error(a.d, key(&a, "stabilitySafety"), SIM_ERR_DICT,
                           "stabilitySafety %g must be in (0, 1)", p->safety);
     return SIM_OK;
+}
+
+static int read_verlet(const struct dict *sol, struct dem *d,
+                       struct dem_solution *s)
+{
+    struct scope v;
+    TRY(scope_open(sol, "verletCoeffs", &v));
+    TRY(dict_get_scalar_or(v.d, key(&v, "deltaT"), 0.0, &s->params.dt));
+    TRY(dict_get_scalar_or(v.d, key(&v, "rayleighFraction"), 0.2,
+                           &s->params.dt_fraction));
+    if (!(s->params.dt >= 0))
+        return dict_error(v.d, key(&v, "deltaT"), SIM_ERR_DICT,
+                          "deltaT must be >= 0 (0: rayleighFraction)");
+    if (!(s->params.dt_fraction > 0 && s->params.dt_fraction <= 1))
+        return dict_error(v.d, key(&v, "rayleighFraction"), SIM_ERR_DICT,
+                          "rayleighFraction %g must be in (0, 1]",
+                          s->params.dt_fraction);
+    double dtr = d->dt_rayleigh;
+    if (s->params.dt > 0 && dtr > 0 && s->params.dt > dtr)
+        return dict_error(v.d, key(&v, "deltaT"), SIM_ERR_DICT,
+                          "deltaT %g s is above the stability bound %g s "
+                          "(Rayleigh step, eq. 38, R_min = %g m)",
+                          s->params.dt, dtr, d->rmin);
+    return SIM_OK;
+}
+
+static void mark_all_used(const struct dict *d, const char *key)
+{
+    const struct dict *sub = NULL;
+    dict_mark_used(d, key);
+    if (!dict_is_dict(d, key) || dict_find_dict(d, key, &sub) || !sub)
+        return;
+    for (int i = 0; i < dict_size(sub); i++)
+        dict_mark_used(sub, dict_key_at(sub, i));
 }
 
 int dem_read_solution(const struct dict *sol, struct dem *d,
@@ -179,27 +238,14 @@ int dem_read_solution(const struct dict *sol, struct dem *d,
     TRY(model_select(sol, "integrator", "DEM integrator",
                      (const void *const *)dem_integrator_table, "arkode", &m));
     s->integrator = m;
+    /* the coefficients of the integrator not selected may stay in the
+     * file (switching is one word), so they are not reported unused */
+    mark_all_used(sol, s->integrator == &dem_integrator_arkode
+                           ? "verletCoeffs" : "arkodeCoeffs");
     if (s->integrator == &dem_integrator_arkode)
         TRY(read_arkode(sol, d, s));
-    else {
-        TRY(dict_get_scalar_or(sol, "verletCoeffs/deltaT", 0.0,
-                               &s->params.dt));
-        TRY(dict_get_scalar_or(sol, "verletCoeffs/rayleighFraction", 0.2,
-                               &s->params.dt_fraction));
-        if (!(s->params.dt >= 0))
-            return dict_error(sol, "verletCoeffs/deltaT", SIM_ERR_DICT,
-                              "deltaT must be >= 0 (0: rayleighFraction)");
-        if (!(s->params.dt_fraction > 0 && s->params.dt_fraction <= 1))
-            return dict_error(sol, "verletCoeffs/rayleighFraction",
-                              SIM_ERR_DICT, "rayleighFraction %g must be in "
-                              "(0, 1]", s->params.dt_fraction);
-        double dtr = d->dt_rayleigh;
-        if (s->params.dt > 0 && dtr > 0 && s->params.dt > dtr)
-            return dict_error(sol, "verletCoeffs/deltaT", SIM_ERR_DICT,
-                              "deltaT %g s is above the stability bound %g s "
-                              "(Rayleigh step, eq. 38, R_min = %g m)",
-                              s->params.dt, dtr, d->rmin);
-    }
+    else
+        TRY(read_verlet(sol, d, s));
     TRY(dict_get_scalar_dim_or(sol, "neighbour/skin", dims_length,
                                0.2 * d->rmax, &d->nl.skin));
     if (!(d->nl.skin > 0))

@@ -22,7 +22,8 @@ int dem_write_contacts(const char *path, const struct dem *d)
         return sim_error(SIM_ERR_IO, "%s: cannot create: %s", tmp,
                          strerror(errno));
     fprintf(f, "# demContacts: tangential springs [m] at t = %.17g\n"
-               "# id_i id_j (or -(wall+1)) hx hy hz\n", d->t);
+               "# h_next %.17g\n"
+               "# id_i id_j (or -(wall+1)) hx hy hz\n", d->t, d->h_next);
     for (size_t i = 0; i < d->n; i++) {
         for (size_t p = d->nl.start[i]; p < d->nl.start[i + 1]; p++) {
             const double *h = &d->hist[3 * p];
@@ -101,6 +102,9 @@ int dem_read_contacts(const char *path, struct dem *d, int *found)
     int rc = SIM_OK;
     while (fgets(line, sizeof line, f)) {
         lineno++;
+        double hn;
+        if (sscanf(line, "# h_next %lg", &hn) == 1)
+            d->h_next = hn;
         if (line[0] == '#')
             continue;
         long long a, b;

@@ -165,6 +165,8 @@ static int step(struct solid *s)
     refresh_scene(s);
     TRY(fo_list_execute(s->fos, &s->scene, s->rt.write_now));
     if (s->rt.write_now) {
+        if (s->sol.integrator->checkpoint)
+            TRY(s->sol.integrator->checkpoint(s->integ, d));
         TRY(write_fields(s));
         app_log_times(&s->app);
     }
@@ -220,6 +222,7 @@ int main(int argc, char **argv)
     if ((rc = create_time(&s)) || (rc = create_grains(&s))
         || (rc = create_functions(&s)) || (rc = start_output(&s)))
         app_fatal(&s.app, rc);
+    dict_mark_used(s.control, "application");  /* read by scripts */
     dict_warn_unused(s.control);
     dict_warn_unused(s.props);
     dict_warn_unused(s.solution);

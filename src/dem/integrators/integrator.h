@@ -37,6 +37,11 @@ struct dem_integrator_ops {
     /* Advance to t_end (> d->t). Call after any outside change of the
      * grains (count, positions) too: the integrator notices. */
     int (*advance)(void *ctx, struct dem *d, double t_end);
+    /* At a write time: make the integrator's future independent of its
+     * past (an adaptive one restarts from d->h_next, which it sets), so
+     * that a run restarted from this time repeats the continuous run to
+     * round-off. May be NULL (nothing to do). */
+    int (*checkpoint)(void *ctx, struct dem *d);
     void (*destroy)(void *ctx);
 };
 

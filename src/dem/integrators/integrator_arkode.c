@@ -48,6 +48,7 @@ struct ark {
     struct dem *d;
     struct dem_integrator_params p;
     char msg[512];             /* last SUNDIALS error message      */
+    int reset;                 /* re-create at the next advance    */
 };
 
 static int rhs(realtype t, N_Vector y, N_Vector ydot, void *ud)
@@ -178,6 +179,9 @@ static int setup(struct ark *a, struct dem *d)
     ARKCHECK(ERKStepSetCFLFraction(a->mem, a->p.safety));
     ARKCHECK(ERKStepSetPostprocessStepFn(a->mem, post_step));
     ARKCHECK(ERKStepSetMaxNumSteps(a->mem, a->p.max_steps));
+    if (d->h_next > 0)
+        ARKCHECK(ERKStepSetInitStep(a->mem, d->h_next));
+    a->reset = 0;
     a->n = d->n;
     a->t_acc = d->t;
     return SIM_OK;
@@ -228,7 +232,7 @@ static int ark_advance(void *ctx, struct dem *d, double t_end)
     a->d = d;
     if (!(t_end > d->t))
         return SIM_OK;
-    if (state_changed(a, d))
+    if (a->reset || state_changed(a, d))
         TRY(setup(a, d));
     TRY(dem_update_neighbours(d, N_VGetArrayPointer(a->y)));
     /* One evaluation at the start sets the contact state the stability
@@ -268,6 +272,16 @@ static int ark_advance(void *ctx, struct dem *d, double t_end)
     return SIM_OK;
 }
 
+static int ark_checkpoint(void *ctx, struct dem *d)
+{
+    struct ark *a = ctx;
+    double h = 0;
+    if (a->mem && ERKStepGetCurrentStep(a->mem, &h) == ARK_SUCCESS && h > 0)
+        d->h_next = h;
+    a->reset = 1;
+    return SIM_OK;
+}
+
 static void ark_destroy(void *ctx)
 {
     struct ark *a = ctx;
@@ -283,5 +297,6 @@ const struct dem_integrator_ops dem_integrator_arkode = {
     .reference = "SUNDIALS ARKode ERKStep 6.4.1 (Reynolds et al. 2023)",
     .create = ark_create,
     .advance = ark_advance,
+    .checkpoint = ark_checkpoint,
     .destroy = ark_destroy,
 };
