@@ -173,6 +173,55 @@ want=$(awk 'BEGIN { for (i = 0; i < 20; i++) for (j = 0; j < 40; j++) for (k = 0
       print "group 4:" n }')
 expect sphere_grains "$(counts curved 0/dem.vtu group)" "$want"
 
+# ---- 2-D sloping floor (half-space) and a circular pillar, against an
+# independent enumeration of the rules: a wall region owns the sites on or
+# inside it, the first dp of depth is wall, then dummies, deeper is empty;
+# an unbounded wall stops at the tank's outer layers
+newcase slope2
+cat > "$TMP/slope2/system/particleDict" <<'DICT'
+dimension 2; dp 0.01; wallLayers 3;
+regions
+(
+    tank   { shape box; min (0 0 0); max (0.3 0.1 0); type tankWall; open (ymax); }
+    water  { shape box; min (0 0 0); max (0.3 0.06 0); type fluid; }
+    slope  { shape plane; point (0.3 0.03 0); normal (-0.3 1 0); type wall; }
+    pillar { shape cylinder; point1 (0.08 0.04 -1); point2 (0.08 0.04 1); radius 0.015; type wall; }
+);
+DICT
+run slope2 || fail run_slope2 "$(grep -A1 FATAL "$TMP/slope2.log" | tail -1)"
+want=$(awk 'function max(a, b) { return a > b ? a : b }
+  BEGIN { nl = sqrt(0.09 + 1); t = 1e-11
+    for (i = -4; i < 34; i++) for (j = -4; j < 14; j++) {
+      x = 0.005 + 0.01 * i; y = 0.005 + 0.01 * j; own = ""
+      # pillar (last region): a circle in 2-D
+      d = sqrt((x - 0.08) ^ 2 + (y - 0.04) ^ 2) - 0.015
+      if (d < t) { own = "pillar"; depth = -d }
+      if (own == "") {  # slope, within the tank band, not above the open top
+        td = max(max(-x, x - 0.3), max(-y, y - 0.1))
+        d = (-0.3 * (x - 0.3) + (y - 0.03)) / nl
+        if (d < t && td < 0.03 - t && y < 0.1 - t) { own = "slope"; depth = -d }
+      }
+      if (own == "") {
+        if (x > 0 && x < 0.3 && y > 0 && y < 0.06) { fluid++; continue }
+        td = max(max(-x, x - 0.3), max(-y, y - 0.1))
+        if (td > -t && y < 0.1 - t) { own = "tank"; depth = td }
+      }
+      if (own == "") continue
+      layer = int(max(depth, 0) / 0.01 + 1e-9)
+      if (layer < 3) n[own]++
+    }
+    printf "fluid %d tank %d slope %d pillar %d\n", fluid, n["tank"], n["slope"], n["pillar"] }')
+got=$(awk '$1 ~ /^[0-9]+$/ && NF == 8 { c[$2] = $6 + $7 + $8 + $5 }
+  END { printf "fluid %d tank %d slope %d pillar %d\n", c["water"], c["tank"], c["slope"], c["pillar"] }' "$TMP/slope2.log")
+expect slope_pillar_2d "$got" "$want"
+
+# the reference dictionary is itself a valid case (coarser dp: quick)
+newcase ref
+sed 's/^dp           0.0027;/dp 0.005;/' "$ROOT/applications/utilities/genParticles/particleDict.reference" \
+    > "$TMP/ref/system/particleDict"
+if run ref && grep -q "^MPS particles: .*grains: 7425$" "$TMP/ref.log"; then pass reference_dict
+else fail reference_dict "particleDict.reference does not run: $(grep -A1 FATAL "$TMP/ref.log" | tail -1)"; fi
+
 # ---- jitter: deterministic for a seed, and grains never overlap --------------
 newcase jit 's/spacing  0.005;/spacing 0.006;/' 's/jitter   0; /jitter 0.08;/' \
     's/max      (0.05 0.1 0.05);/max (0.03 0.03 0.03);/'

@@ -105,7 +105,7 @@ static void print_summary(const struct gen_case *c)
         const struct region *r = &c->r[i];
         log_info("    %-5d %-16s %-9s %-9s %10zu %10zu %10zu %10zu", i,
                  r->name, region_type_names[r->type],
-                 geom_shape_names[r->g.shape], r->count[0], r->count[1],
+                 geom_shape_names[r->shape], r->count[0], r->count[1],
                  r->count[2], r->count[3]);
         for (int k = 0; k < 4; k++)
             tot[k] += r->count[k];

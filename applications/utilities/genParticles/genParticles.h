@@ -25,6 +25,8 @@ struct region {
     char name[64];
     enum region_type type;
     struct geom g;
+    int shape;              /* the shape word given (geom may differ: a   */
+                            /* 2-D cylinder along z becomes a circle)     */
     const struct dict *d;   /* its sub-dictionary, for error locations  */
     unsigned open;          /* tankWall box: bit 2 axis + side open      */
     int bounded;            /* shape has a finite bounding box           */

@@ -36,6 +36,7 @@ static int read_shape(const struct gen_case *c, struct region *r)
     int shape;
 
     TRY(dict_get_word(d, "shape", geom_shape_names, &shape));
+    r->shape = shape;
     switch ((enum geom_shape)shape) {
     case GEOM_BOX:
         TRY(dict_get_vector(d, "min", 3, a));
