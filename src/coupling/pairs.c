@@ -11,6 +11,7 @@
 #include "coupling/pairs.h"
 
 #include <math.h>
+#include <omp.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -59,6 +60,8 @@ static int reserve_points(struct coupling_pairs *P, int ng, int np)
     TRY(reserve((void **)&P->pcell, &c, (size_t)np + 1, sizeof *P->pcell));
     c = c0;
     TRY(reserve((void **)&P->cidx, &c, (size_t)np + 1, sizeof *P->cidx));
+    c = c0;
+    TRY(reserve((void **)&P->xs, &c, (size_t)np + 1, 3 * sizeof *P->xs));
     P->cap_p = c;
     return SIM_OK;
 }
@@ -81,37 +84,65 @@ static int check_input(int dim, double re, int ng, const double *xg, int np)
     return SIM_OK;
 }
 
-/* Pairs of grain k with the particles of the cells around it, written to
- * (j, w) when j is not NULL; returns their number. */
-static int64_t grain_row_cells(const struct coupling_pairs *P, const double *xk,
-                               const double *xp, int32_t *j, double *w)
+/* Cells around a grain: lo..hi per axis (inclusive). */
+static void stencil(const struct coupling_pairs *P, const double *xk,
+                    int lo[3], int hi[3])
 {
-    int lo[3] = { 0, 0, 0 }, hi[3] = { 0, 0, 0 };
+    for (int d = 0; d < 3; d++)
+        lo[d] = hi[d] = 0;
     for (int d = 0; d < P->dim; d++) {
         int c = (int)floor((xk[d] - P->lo[d]) / P->h);
-        lo[d] = c > 0 ? c - 1 : 0;
-        hi[d] = c + 1 < P->nc[d] ? c + 1 : P->nc[d] - 1;
+        lo[d] = c > P->reach ? c - P->reach : 0;
+        hi[d] = c + P->reach < P->nc[d] ? c + P->reach : P->nc[d] - 1;
     }
-    const double re2 = P->re * P->re;
-    int64_t m = 0;
+}
+
+/* Cells lo[0]..hi[0] of one (y, z) row are contiguous in cidx, so a
+ * stencil is a few contiguous ranges of particles. */
+static void row_range(const struct coupling_pairs *P, const int lo[3],
+                      const int hi[3], int cy, int cz, int64_t *e0,
+                      int64_t *e1)
+{
+    int64_t c = ((int64_t)cz * P->nc[1] + cy) * P->nc[0];
+    *e0 = P->cstart[c + lo[0]];
+    *e1 = P->cstart[c + hi[0] + 1];
+}
+
+static int64_t candidates(const struct coupling_pairs *P, const int lo[3],
+                          const int hi[3])
+{
+    int64_t n = 0, e0, e1;
     for (int cz = lo[2]; cz <= hi[2]; cz++)
-        for (int cy = lo[1]; cy <= hi[1]; cy++)
-            for (int cx = lo[0]; cx <= hi[0]; cx++) {
-                int64_t c = ((int64_t)cz * P->nc[1] + cy) * P->nc[0] + cx;
-                for (int64_t e = P->cstart[c]; e < P->cstart[c + 1]; e++) {
-                    int32_t i = P->cidx[e];
-                    double dx = xp[3 * i] - xk[0], dy = xp[3 * i + 1] - xk[1];
-                    double dz = P->dim == 3 ? xp[3 * i + 2] - xk[2] : 0.0;
-                    double r2 = dx * dx + dy * dy + dz * dz;
-                    if (!(r2 < re2))
-                        continue;
-                    if (j) {
-                        j[m] = i;
-                        w[m] = coupling_ws(sqrt(r2), P->re);
-                    }
+        for (int cy = lo[1]; cy <= hi[1]; cy++) {
+            row_range(P, lo, hi, cy, cz, &e0, &e1);
+            n += e1 - e0;
+        }
+    return n;
+}
+
+/* Pairs of grain k with the particles of its stencil, written to (j, w);
+ * returns their number. */
+static int64_t grain_row_cells(const struct coupling_pairs *P, const double *xk,
+                               const int lo[3], const int hi[3], int32_t *j,
+                               double *w)
+{
+    const double re2 = P->re * P->re;
+    int64_t m = 0, e0, e1;
+    for (int cz = lo[2]; cz <= hi[2]; cz++)
+        for (int cy = lo[1]; cy <= hi[1]; cy++) {
+            row_range(P, lo, hi, cy, cz, &e0, &e1);
+            for (int64_t e = e0; e < e1; e++) {
+                const double *x = P->xs + 3 * e;
+                double dx = x[0] - xk[0], dy = x[1] - xk[1];
+                double dz = P->dim == 3 ? x[2] - xk[2] : 0.0;
+                double r2 = dx * dx + dy * dy + dz * dz;
+                if (r2 < re2) {
+                    j[m] = P->cidx[e];
+                    w[m] = coupling_ws(sqrt(r2), P->re);
                     m++;
                 }
             }
+        }
     return m;
 }
 
@@ -131,7 +162,7 @@ static int make_grid(struct coupling_pairs *P, int ng, const double *xg,
         hi[d] += P->re;
     }
     double max_cells = fmax(1024.0, 4.0 * ((double)ng + np));
-    P->h = P->re;
+    P->h = 0.5 * P->re;
     for (;;) {
         double n[3] = { 1, 1, 1 }, ncell = 1;
         for (int d = 0; d < P->dim; d++) {
@@ -146,6 +177,9 @@ static int make_grid(struct coupling_pairs *P, int ng, const double *xg,
         P->h *= 1.26;
     }
     memcpy(P->lo, lo, sizeof lo);
+    /* |floor(a) - floor(b)| <= ceil(|a - b|): reach cells hold every
+     * particle within re of the grain. */
+    P->reach = (int)ceil(P->re / P->h - 1e-12);
     size_t ncell = (size_t)P->nc[0] * P->nc[1] * P->nc[2];
     TRY(reserve((void **)&P->cstart, &P->cap_cell, ncell + 1,
                 sizeof *P->cstart));
@@ -187,6 +221,11 @@ static void bin_particles(struct coupling_pairs *P, int np, const double *xp)
     for (size_t c = ncell; c > 0; c--)
         P->cstart[c] = P->cstart[c - 1];
     P->cstart[0] = 0;
+    int64_t nb = P->cstart[ncell];
+#pragma omp parallel for schedule(static)
+    for (int64_t e = 0; e < nb; e++)
+        for (int d = 0; d < 3; d++)
+            P->xs[3 * e + d] = xp[3 * (size_t)P->cidx[e] + d];
 }
 
 /* Particle-major copy of the grain-major rows; grains ascending per row. */
@@ -214,7 +253,7 @@ static int prefix_and_reserve(struct coupling_pairs *P)
     for (int k = 0; k < P->ng; k++)
         P->gstart[k + 1] += P->gstart[k];
     P->npair = P->gstart[P->ng];
-    if (P->npair > INT32_MAX)
+    if (P->npair >= INT32_MAX)
         return sim_error(SIM_ERR_INPUT, "coupling pairs: %lld pairs exceed "
                          "the 32-bit index range", (long long)P->npair);
     return reserve_pairs(P, (size_t)P->npair + 1);
@@ -231,6 +270,115 @@ static int setup(struct coupling_pairs *P, int dim, double re, int ng,
     return reserve_points(P, ng, np);
 }
 
+/* Per-thread row buffers and transpose counts for nt threads. */
+static int reserve_threads(struct coupling_pairs *P, int nt, int np)
+{
+    if (nt > P->nthr) {
+        struct coupling_pair_buf *t =
+            sim_realloc(P->tbuf, (size_t)nt * sizeof *t);
+        if (!t)
+            return SIM_ERR_NOMEM;
+        memset(t + P->nthr, 0, (size_t)(nt - P->nthr) * sizeof *t);
+        P->tbuf = t;
+        P->nthr = nt;
+    }
+    return reserve((void **)&P->tcount, &P->cap_tcount,
+                   (size_t)nt * ((size_t)np + 1), sizeof *P->tcount);
+}
+
+/* Grains of chunk t of T: contiguous, ascending. */
+static void chunk(int ng, int t, int T, int *k0, int *k1)
+{
+    *k0 = (int)((int64_t)ng * t / T);
+    *k1 = (int)((int64_t)ng * (t + 1) / T);
+}
+
+/* Rows of the grains of chunk t into the thread's buffer (one pass over
+ * the cells: the buffer is grown to hold every candidate first). */
+static int rows_of_chunk(struct coupling_pairs *P, int t, int T,
+                         const double *xg)
+{
+    struct coupling_pair_buf *b = &P->tbuf[t];
+    int k0, k1, lo[3], hi[3];
+    chunk(P->ng, t, T, &k0, &k1);
+    b->n = 0;
+    for (int k = k0; k < k1; k++) {
+        const double *xk = xg + 3 * (size_t)k;
+        stencil(P, xk, lo, hi);
+        size_t need = b->n + (size_t)candidates(P, lo, hi);
+        if (need > b->cap) {
+            /* plain realloc: sim_error's message is thread-local and
+             * this runs on a worker thread; the caller reports */
+            size_t cap = need + need / 2 + 1024;
+            int32_t *j = realloc(b->j, cap * sizeof *j);
+            if (j)
+                b->j = j;
+            double *w = realloc(b->w, cap * sizeof *w);
+            if (w)
+                b->w = w;
+            if (!j || !w)
+                return SIM_ERR_NOMEM;
+            b->cap = cap;
+        }
+        int64_t m = grain_row_cells(P, xk, lo, hi, b->j + b->n, b->w + b->n);
+        P->gstart[k + 1] = m;
+        b->n += (size_t)m;
+    }
+    return SIM_OK;
+}
+
+/* Copy the thread rows into place and transpose them. Thread t counts
+ * the particles of its contiguous grain range; the counts become cursors
+ * laid out so that every particle row lists grains in ascending order,
+ * whatever T is. */
+static void gather_and_transpose(struct coupling_pairs *P, int T)
+{
+    const size_t np = (size_t)P->np;
+#pragma omp parallel for schedule(static, 1)
+    for (int t = 0; t < T; t++) {
+        int k0, k1;
+        chunk(P->ng, t, T, &k0, &k1);
+        struct coupling_pair_buf *b = &P->tbuf[t];
+        memcpy(P->gj + P->gstart[k0], b->j, b->n * sizeof *b->j);
+        memcpy(P->gw + P->gstart[k0], b->w, b->n * sizeof *b->w);
+        int32_t *cnt = P->tcount + (size_t)t * np;
+        memset(cnt, 0, np * sizeof *cnt);
+        for (int64_t e = P->gstart[k0]; e < P->gstart[k1]; e++)
+            cnt[P->gj[e]]++;
+    }
+#pragma omp parallel for schedule(static)
+    for (size_t i = 0; i < np; i++) {
+        int64_t n = 0;
+        for (int t = 0; t < T; t++)
+            n += P->tcount[(size_t)t * np + i];
+        P->pstart[i + 1] = n;
+    }
+    P->pstart[0] = 0;
+    for (size_t i = 0; i < np; i++)
+        P->pstart[i + 1] += P->pstart[i];
+#pragma omp parallel for schedule(static)
+    for (size_t i = 0; i < np; i++) {
+        int64_t run = P->pstart[i];
+        for (int t = 0; t < T; t++) {
+            int32_t c = P->tcount[(size_t)t * np + i];
+            P->tcount[(size_t)t * np + i] = (int32_t)run;
+            run += c;
+        }
+    }
+#pragma omp parallel for schedule(static, 1)
+    for (int t = 0; t < T; t++) {
+        int k0, k1;
+        chunk(P->ng, t, T, &k0, &k1);
+        int32_t *cur = P->tcount + (size_t)t * np;
+        for (int k = k0; k < k1; k++)
+            for (int64_t e = P->gstart[k]; e < P->gstart[k + 1]; e++) {
+                int32_t at = cur[P->gj[e]]++;
+                P->pk[at] = k;
+                P->pw[at] = P->gw[e];
+            }
+    }
+}
+
 int coupling_pairs_build(struct coupling_pairs *P, int dim, double re,
                          int ng, const double *xg, int np, const double *xp)
 {
@@ -244,16 +392,21 @@ int coupling_pairs_build(struct coupling_pairs *P, int dim, double re,
     }
     TRY(make_grid(P, ng, xg, np));
     bin_particles(P, np, xp);
-#pragma omp parallel for schedule(dynamic, 16)
-    for (int k = 0; k < ng; k++)
-        P->gstart[k + 1] = grain_row_cells(P, xg + 3 * (size_t)k, xp, NULL,
-                                           NULL);
+    /* Chunks, not threads, carry the work, so T is fixed before the
+     * parallel regions whatever number of threads the runtime grants. */
+    int T = omp_get_max_threads();
+    if (T > ng)
+        T = ng;
+    TRY(reserve_threads(P, T, np));
+    int fail = 0;
+#pragma omp parallel for schedule(static, 1) reduction(| : fail)
+    for (int t = 0; t < T; t++)
+        fail |= rows_of_chunk(P, t, T, xg) != SIM_OK;
+    if (fail)
+        return sim_error(SIM_ERR_NOMEM, "coupling pairs: out of memory for "
+                         "the pair rows of %d grains", ng);
     TRY(prefix_and_reserve(P));
-#pragma omp parallel for schedule(dynamic, 16)
-    for (int k = 0; k < ng; k++)
-        grain_row_cells(P, xg + 3 * (size_t)k, xp, P->gj + P->gstart[k],
-                        P->gw + P->gstart[k]);
-    transpose(P);
+    gather_and_transpose(P, T);
     return SIM_OK;
 }
 
@@ -303,7 +456,14 @@ void coupling_pairs_free(struct coupling_pairs *P)
     free(P->pw);
     free(P->cstart);
     free(P->cidx);
+    free(P->xs);
     free(P->pcell);
     free(P->gwork);
+    for (int t = 0; t < P->nthr; t++) {
+        free(P->tbuf[t].j);
+        free(P->tbuf[t].w);
+    }
+    free(P->tbuf);
+    free(P->tcount);
     memset(P, 0, sizeof *P);
 }
