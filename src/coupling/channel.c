@@ -433,6 +433,7 @@ int channel_open(const struct channel_settings *s, struct channel **out)
     c->fd = -1;
     c->peer_pidfd = -1;
     c->registry_slot = -1;
+    c->owner = getpid();
     c->side = s->side;
     c->peer = 1 - s->side;
     c->hung_ns = (uint64_t)(CHANNEL_HUNG_HEARTBEATS * s->heartbeat_interval

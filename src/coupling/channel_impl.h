@@ -110,6 +110,7 @@ struct channel {
     pthread_cond_t hb_cond;
     int hb_stop;
     int registry_slot;
+    pid_t owner;                /* process that opened it (not a fork)     */
 };
 
 /* channel_wait.c */

@@ -83,8 +83,10 @@ int channel_signals_install(void)
 
 static void close_all_at_exit(void)
 {
+    /* a forked child inherits the list but not the heartbeat threads nor
+     * the right to speak for its parent's side: it leaves them alone */
     for (int i = 0; i < REG_MAX; i++)
-        if (registry[i])
+        if (registry[i] && registry[i]->owner == getpid())
             channel_close(registry[i], SIM_ERR_INTERNAL);
 }
 

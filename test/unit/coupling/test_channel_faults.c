@@ -82,7 +82,7 @@ static void test_timeout_without_peer(void **state)
     double t0 = now_s();
     assert_int_equal(channel_open(&s, &c), SIM_ERR_TIMEOUT);
     double dt = now_s() - t0;
-    assert_true(dt >= 0.29 && dt < 1.0);
+    assert_true(dt >= 0.29 && dt < 1.5);
     assert_non_null(strstr(sim_error_message(), "within 0.3 s"));
     assert_false(segment_exists(name));
 }
@@ -108,7 +108,7 @@ static void test_signal_ends_wait(void **state)
     pid_t pid = spawn(interrupt_parent, NULL);
     assert_int_equal(channel_open(&s, &c), SIM_ERR_INTERRUPT);
     double dt = now_s() - t0;
-    assert_true(dt >= 0.19 && dt < 0.6);
+    assert_true(dt >= 0.19 && dt < 1.5);
     assert_non_null(strstr(sim_error_message(), "signal INT"));
     assert_int_equal(channel_interrupted(), SIGINT);
     channel_interrupt_clear();
@@ -128,6 +128,10 @@ static int deaf_peer(void *arg)
     test_settings(&s, CHANNEL_SOLID, arg);
     if (channel_open(&s, &c))
         return 2;
+    double x = 1.0;
+    struct channel_frame f = { .kind = 1, .bytes = sizeof x };
+    if (channel_send(c, &f, &x))   /* tells the parent we are past open */
+        return 3;
     for (;;)
         sleep_s(0.05);
 }
@@ -144,6 +148,8 @@ static void test_second_signal_unlinks_and_kills(void **state)
     pid_t pid = spawn(deaf_peer, name);
     test_settings(&s, CHANNEL_FLUID, name);
     assert_int_equal(channel_open(&s, &c), SIM_OK);
+    assert_int_equal(channel_recv(c, &f, &data), SIM_OK);
+    assert_int_equal(channel_recv_done(c), SIM_OK);
     kill(pid, SIGTERM);
     sleep_s(1.2);
     assert_int_equal(waitpid(pid, NULL, WNOHANG), 0);  /* still running */
@@ -224,7 +230,7 @@ static void test_peer_killed_while_receiving(void **state)
     double t0 = now_s();
     assert_int_equal(channel_recv(c, &f, &data), SIM_ERR_PEER);
     double dt = now_s() - t0;
-    assert_true(dt < 0.3 + 0.5);
+    assert_true(dt < 0.3 + 2.0);
     assert_non_null(strstr(sim_error_message(), "died without closing"));
     assert_int_equal(channel_close(c, SIM_ERR_PEER), SIM_OK);
     assert_int_equal(reap(pid), 128 + SIGKILL);
@@ -247,7 +253,7 @@ static void test_peer_killed_while_sending(void **state)
         rc = channel_send(c, &f, x);
     assert_int_equal(rc, SIM_ERR_PEER);
     assert_int_equal(k, 3);
-    assert_true(now_s() - t0 < 0.3 + 0.5);
+    assert_true(now_s() - t0 < 0.3 + 2.0);
     assert_int_equal(channel_close(c, SIM_ERR_PEER), SIM_OK);
     assert_int_equal(reap(pid), 128 + SIGKILL);
     assert_false(segment_exists(name));
@@ -266,8 +272,9 @@ static void test_peer_stopped_is_hung(void **state)
     double t0 = now_s();
     assert_int_equal(channel_recv(c, &f, &data), SIM_ERR_PEER);
     double dt = now_s() - t0;
-    /* CHANNEL_HUNG_HEARTBEATS x 0.05 s = 1 s of silence */
-    assert_true(dt > 0.8 && dt < 2.0);
+    /* CHANNEL_HUNG_HEARTBEATS x 0.05 s = 1 s of silence; the time-out (5 s)
+     * must not be what ends the wait */
+    assert_true(dt > 0.8 && dt < 4.0);
     assert_non_null(strstr(sim_error_message(), "no heartbeat"));
     assert_int_equal(channel_close(c, SIM_ERR_PEER), SIM_OK);
     kill(pid, SIGKILL);
@@ -310,7 +317,7 @@ static void test_timeout_on_live_silent_peer(void **state)
     double t0 = now_s();
     assert_int_equal(channel_recv(c, &f, &data), SIM_ERR_TIMEOUT);
     double dt = now_s() - t0;
-    assert_true(dt >= 0.39 && dt < 0.9);
+    assert_true(dt >= 0.39 && dt < 1.5);
     assert_int_equal(channel_close(c, SIM_ERR_TIMEOUT), SIM_OK);
     assert_int_equal(reap(pid), 0);
     assert_false(segment_exists(name));
@@ -362,7 +369,7 @@ static void test_second_pair_refused(void **state)
         test_settings(&s, side, name);
         double t0 = now_s();
         assert_int_equal(channel_open(&s, &c), SIM_ERR_INPUT);
-        assert_true(now_s() - t0 < 0.5);
+        assert_true(now_s() - t0 < 2.0);
         assert_non_null(strstr(sim_error_message(), "already coupled"));
         assert_non_null(strstr(sim_error_message(), "second pair"));
     }
