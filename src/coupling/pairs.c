@@ -339,8 +339,10 @@ static void gather_and_transpose(struct coupling_pairs *P, int T)
         int k0, k1;
         chunk(P->ng, t, T, &k0, &k1);
         struct coupling_pair_buf *b = &P->tbuf[t];
-        memcpy(P->gj + P->gstart[k0], b->j, b->n * sizeof *b->j);
-        memcpy(P->gw + P->gstart[k0], b->w, b->n * sizeof *b->w);
+        if (b->n) {
+            memcpy(P->gj + P->gstart[k0], b->j, b->n * sizeof *b->j);
+            memcpy(P->gw + P->gstart[k0], b->w, b->n * sizeof *b->w);
+        }
         int32_t *cnt = P->tcount + (size_t)t * np;
         memset(cnt, 0, np * sizeof *cnt);
         for (int64_t e = P->gstart[k0]; e < P->gstart[k1]; e++)
