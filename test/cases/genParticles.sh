@@ -8,8 +8,9 @@
 # per check; bin/vtuInfo reads the files back.
 set -u
 ROOT=$(cd "$(dirname "$0")/../.." && pwd)
-GEN=$ROOT/bin/genParticles
-INFO=$ROOT/bin/vtuInfo
+BIN=${MPSDEM_BIN:-$ROOT/bin}   # bin-san for the sanitizer build
+GEN=$BIN/genParticles
+INFO=$BIN/vtuInfo
 CASE0=$ROOT/test/cases/genParticles
 TMP=$(mktemp -d)
 trap 'rm -rf "$TMP"' EXIT
@@ -264,5 +265,10 @@ bad no_kernel_radius "wallLayers auto needs" 's/^kernelRadius 2.1;//'
 bad grain_overlap "grains would overlap" 's/diameter 0.005;/diameter 0.006;/'
 bad open_face "unknown face 'top'" 's/open    (zmax);/open (top);/'
 no_leftovers leftovers_bad too_big
+
+# with MPSDEM_BIN=bin-san: a sanitizer report anywhere is a failure, even in
+# the runs that were expected to exit 1
+san=$(grep -l -E 'ERROR: (Address|Leak)Sanitizer|runtime error:' "$TMP"/*.log 2> /dev/null | head -3)
+if [ -n "$san" ]; then fail sanitizer "reports in $(echo $san)"; fi
 
 [ "$nfail" -eq 0 ]
