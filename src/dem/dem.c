@@ -166,6 +166,11 @@ static int rebuild(struct dem *d, const double *x, const size_t *map,
     return rc;
 }
 
+int dem_rebuild_neighbours(struct dem *d)
+{
+    return rebuild(d, d->x, NULL, d->n);
+}
+
 int dem_update_neighbours(struct dem *d, const double *x)
 {
     if (!nlist_stale(&d->nl, d->n, x))

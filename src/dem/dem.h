@@ -124,6 +124,10 @@ void dem_commit_history(struct dem *d);
  * build; histories follow their pairs. Returns SIM_OK. */
 int dem_update_neighbours(struct dem *d, const double *x);
 
+/* Rebuild now (at a write time, so that the state a restart starts from
+ * is exactly the continuing run's: same list, same reference positions). */
+int dem_rebuild_neighbours(struct dem *d);
+
 /* Overlap statistics for the start-up check: number of pairs (and wall
  * contacts) overlapping by more than frac of the smaller radius, and the
  * largest relative overlap. */

@@ -5,7 +5,7 @@
 # slidingToRolling tutorial, whose answer depends on the tangential spring
 # history; the restart falls in the sliding phase.
 ROOT="$(cd "$(dirname "$0")/../.." && pwd)"
-TUT="$ROOT/tutorials/demSolid/slidingToRolling"
+TUT="$ROOT/tutorials/demSolid/granularColumnCollapse"
 WORK="$(mktemp -d)"
 trap 'rm -rf "$WORK"' EXIT
 fails=0
@@ -16,6 +16,11 @@ for integ in arkode verlet; do
         cp -r "$TUT" "$c"
         "$T" "$c/system/demSolution" -set "integrator=$integ" >/dev/null
         "$T" "$c/system/controlDict" -set "writeInterval=0.03" >/dev/null
+        "$T" "$c/system/controlDict" -set "writeFormat=ascii" >/dev/null
+        "$T" "$c/system/particleDict" -set "regions/beads/min=(0.0047 0.0055 0)" >/dev/null
+        "$T" "$c/system/particleDict" -set "regions/beads/max=(0.0155 0.0163 0.0108)" >/dev/null
+        "$T" "$c/system/particleDict" -set "regions/beads/velocity=(0.1 0 0)" >/dev/null
+        "$T" "$c/system/particleDict" -set "regions/beads/omega=(0 0 30)" >/dev/null
         "$T" "$c/system/controlDict" -set "endTime=0.06" >/dev/null
         (cd "$c" && "$ROOT/bin/genParticles" > log.genParticles 2>&1) || fails=$((fails+1))
         if [ $kind = restarted ]; then

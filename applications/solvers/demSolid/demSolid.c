@@ -11,6 +11,7 @@
  * coupling) interval; the DEM sub-steps inside it are the integrator's
  * business (system/demSolution).
  */
+#include <math.h>
 #include <stdio.h>
 #include <string.h>
 #include <sys/stat.h>
@@ -150,12 +151,27 @@ static int start_output(struct solid *s)
     return params_write(used, 1);
 }
 
+/* The time the DEM is advanced to. Between writes it is k deltaT with k
+ * counted from time 0, not startTime + n deltaT: the two differ by an ulp,
+ * and a restarted run (which starts at the written time) must see exactly
+ * the times the continuous run saw, or the chaotic grain dynamics amplify
+ * the ulp. At writes it is the write time itself, which a restart reads. */
+static double target_time(const struct solid *s)
+{
+    const struct run_time *rt = &s->rt;
+    if (rt->write_now || rt->adjust || rt->dt != rt->delta_t)
+        return rt->value;
+    double k0 = floor(rt->start_time / rt->delta_t + 0.5);
+    double tk = (k0 + (double)rt->step) * rt->delta_t;
+    return fabs(tk - rt->value) < 1e-9 * rt->delta_t ? tk : rt->value;
+}
+
 static int step(struct solid *s)
 {
     struct dem *d = &s->d;
     time_set_step(&s->rt, s->rt.delta_t);
     time_increment(&s->rt);
-    TRY(s->sol.integrator->advance(s->integ, d, s->rt.value));
+    TRY(s->sol.integrator->advance(s->integ, d, target_time(s)));
     long outside = dem_check_domain(d);
     if (outside < 0)
         return SIM_ERR_NOMEM;
@@ -167,6 +183,7 @@ static int step(struct solid *s)
     if (s->rt.write_now) {
         if (s->sol.integrator->checkpoint)
             TRY(s->sol.integrator->checkpoint(s->integ, d));
+        TRY(dem_rebuild_neighbours(d));
         TRY(write_fields(s));
         app_log_times(&s->app);
     }
