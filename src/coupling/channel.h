@@ -46,6 +46,27 @@
  * A stale segment (every program that claimed it is gone) is removed and
  * replaced; a program whose side of the channel is already held by a live
  * program is refused. Only one thread per program may use a channel.
+ *
+ * In a solver (demSolid shown; mpsFluid is the mirror image):
+ *
+ *     channel_signals_install();                  // before anything waits
+ *     struct channel_settings cs;
+ *     TRY(channel_settings_default(&cs, CHANNEL_SOLID, "demSolid", case_dir));
+ *     TRY(channel_settings_from_dict(couplingDict, &cs));
+ *     cs.dimension = 3;                           // and units, slot_bytes
+ *     TRY(channel_open(&cs, &ch));
+ *     while (time_loop_run(...)) {
+ *         rc = proto_send_dem_state(ch, step, t, &state);     // protocol.h
+ *         if (!rc) rc = channel_recv(ch, &frame, &payload);    // fluid state
+ *         ...                                                  // sub-steps
+ *         if (rc) break;
+ *     }
+ *     if (rc) write the last complete time directory;
+ *     channel_close(ch, rc);                      // unlinks when last out
+ *     if (rc) app_fatal(...);
+ *
+ * A long computation between messages may call channel_poll() to notice
+ * a dead peer or a signal before its next message.
  */
 #ifndef MPSDEM_COUPLING_CHANNEL_H
 #define MPSDEM_COUPLING_CHANNEL_H
