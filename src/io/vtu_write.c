@@ -8,7 +8,8 @@
  * followed, separately padded, by the data; ascii payloads as %.17g (exact
  * for doubles) or exact integers. Chunks hold a multiple of 3 bytes, so the
  * base64 of consecutive chunks concatenates without inner padding, and a
- * multiple of 8, so no element straddles two chunks.
+ * multiple of 8, so no element straddles two chunks. The ascii text is the
+ * same whatever the number of threads.
  */
 #include <inttypes.h>
 #include <stdlib.h>
@@ -23,124 +24,148 @@
 #error "vtu_write.c writes byte_order=LittleEndian from host memory"
 #endif
 
-#define CHUNK (24 * 2048) /* bytes, multiple of 3 and of 8            */
-#define TEXT_FLUSH 65536  /* ascii text is handed over past this size */
+#define CHUNK (24 * 2048)   /* bytes, multiple of 3 and of 8          */
+#define ASCII_BLOCK 65536   /* values formatted in parallel at once    */
+#define ASCII_SLICES 16     /* pieces of a block (threads share them)  */
+#define ASCII_CHARS 26      /* room per value: 24 characters + blank   */
+#define TEXT_SIZE (ASCII_BLOCK * ASCII_CHARS) /* > b64 of one CHUNK    */
 
 static const char *const type_names[] = { "Float64", "Int64", "Int32",
                                           "UInt8" };
 static const size_t type_sizes[] = { 8, 8, 4, 1 };
 
-/* A payload: borrowed bytes, or bytes made on demand (the cell arrays). */
+/* A payload: borrowed bytes, or values made on demand (the cell arrays:
+ * connectivity i, end offsets i + 1, cell types VTK_VERTEX = 1). */
+enum gen { GEN_NONE, GEN_INDEX, GEN_INDEX1, GEN_ONE };
+
 struct payload {
     enum vtu_type type;
     int ncomp;
     size_t nbytes;
-    const unsigned char *data;                  /* or NULL and gen  */
-    void (*gen)(size_t first, size_t count, unsigned char *out);
+    const unsigned char *data; /* or NULL and gen */
+    enum gen gen;
 };
 
-static void gen_connectivity(size_t first, size_t count, unsigned char *out)
+/* Bytes [first, first + count) of element index, for generated payloads. */
+static void generate(const struct payload *p, size_t first, size_t count,
+                     unsigned char *out)
 {
-    int64_t *v = (int64_t *)(void *)out;
-    for (size_t i = 0; i < count; i++)
-        v[i] = (int64_t)(first + i);
-}
-
-static void gen_offsets(size_t first, size_t count, unsigned char *out)
-{
-    int64_t *v = (int64_t *)(void *)out;
-    for (size_t i = 0; i < count; i++)
-        v[i] = (int64_t)(first + i + 1); /* end offsets (VTK XML 1.0) */
-}
-
-static void gen_types(size_t first, size_t count, unsigned char *out)
-{
-    (void)first;
-    memset(out, 1, count); /* VTK_VERTEX */
+    if (p->gen == GEN_ONE) {
+        memset(out, 1, count);
+        return;
+    }
+    for (size_t i = 0; i < count; i++) {
+        int64_t v = (int64_t)(first + i) + (p->gen == GEN_INDEX1);
+        memcpy(out + 8 * i, &v, 8);
+    }
 }
 
 struct emitter {
     struct xml_out *o;
-    char *text; /* TEXT_FLUSH + 64 bytes       */
-    size_t len;
-    unsigned char *chunk; /* CHUNK bytes (generated data) */
+    char *text;           /* base64 of one chunk, or ascii of one block */
+    unsigned char *chunk; /* CHUNK bytes (generated data)               */
 };
 
-static void emit_flush(struct emitter *e)
+/* Value i of p as text; returns its length (at most 24 characters). */
+static int format_value(const struct payload *p, size_t i, char *s)
 {
-    if (e->len == 0)
-        return;
-    e->text[e->len] = '\0';
-    xml_out_check(e->o, xmlTextWriterWriteRaw(e->o->w, BAD_CAST e->text));
-    e->len = 0;
+    unsigned char b[8];
+    const unsigned char *v = b;
+    size_t es = type_sizes[p->type];
+
+    if (p->data)
+        v = p->data + es * i;
+    else
+        generate(p, i, 1, b);
+    switch (p->type) {
+    case VTU_FLOAT64: {
+        double x;
+        memcpy(&x, v, 8);
+        return sprintf(s, "%.17g", x);
+    }
+    case VTU_INT64: {
+        int64_t x;
+        memcpy(&x, v, 8);
+        return sprintf(s, "%" PRId64, x);
+    }
+    case VTU_INT32: {
+        int32_t x;
+        memcpy(&x, v, 4);
+        return sprintf(s, "%" PRId32, x);
+    }
+    default:
+        return sprintf(s, "%u", (unsigned)v[0]);
+    }
 }
 
-static void emit_ascii(struct emitter *e, const struct payload *p,
-                       const unsigned char *bytes, size_t first, size_t count)
+/* ascii: values [first, first + count) into s, each followed by a blank or,
+ * at the end of a point (eight values for scalars), a newline. */
+static size_t format_range(const struct payload *p, size_t first,
+                           size_t count, char *s)
 {
-    /* A line per point for vectors, eight values a line for scalars. */
-    size_t per_line = p->ncomp > 1 ? (size_t)p->ncomp : 8;
+    size_t per_line = p->ncomp > 1 ? (size_t)p->ncomp : 8, len = 0;
+    for (size_t i = first; i < first + count; i++) {
+        len += (size_t)format_value(p, i, s + len);
+        s[len++] = (i + 1) % per_line ? ' ' : '\n';
+    }
+    return len;
+}
 
-    for (size_t i = 0; i < count; i++) {
-        char *s = e->text + e->len;
-        int k;
-        switch (p->type) {
-        case VTU_FLOAT64: {
-            double v;
-            memcpy(&v, bytes + 8 * i, 8);
-            k = sprintf(s, "%.17g", v);
-            break;
+/* printf("%.17g") costs about a microsecond a value: blocks of values are
+ * formatted by all threads, each into its own slice of the text buffer,
+ * and handed to the writer in order. */
+static void emit_ascii(struct emitter *e, const struct payload *p)
+{
+    size_t nval = p->nbytes / type_sizes[p->type];
+
+    for (size_t b0 = 0; b0 < nval && !e->o->failed; b0 += ASCII_BLOCK) {
+        size_t nb = nval - b0 < ASCII_BLOCK ? nval - b0 : ASCII_BLOCK;
+        size_t len[ASCII_SLICES];
+#pragma omp parallel for schedule(static)
+        for (int t = 0; t < ASCII_SLICES; t++) {
+            size_t a = nb * (size_t)t / ASCII_SLICES;
+            size_t b = nb * (size_t)(t + 1) / ASCII_SLICES;
+            len[t] = format_range(p, b0 + a, b - a,
+                                  e->text + a * ASCII_CHARS);
         }
-        case VTU_INT64: {
-            int64_t v;
-            memcpy(&v, bytes + 8 * i, 8);
-            k = sprintf(s, "%" PRId64, v);
-            break;
+        for (int t = 0; t < ASCII_SLICES; t++) {
+            size_t a = nb * (size_t)t / ASCII_SLICES;
+            if (len[t])
+                xml_out_check(e->o, xmlTextWriterWriteRawLen(
+                                        e->o->w, BAD_CAST(e->text + a *
+                                                          ASCII_CHARS),
+                                        (int)len[t]));
         }
-        case VTU_INT32: {
-            int32_t v;
-            memcpy(&v, bytes + 4 * i, 4);
-            k = sprintf(s, "%" PRId32, v);
-            break;
-        }
-        default:
-            k = sprintf(s, "%u", (unsigned)bytes[i]);
-            break;
-        }
-        e->len += (size_t)k;
-        e->text[e->len++] = (first + i + 1) % per_line ? ' ' : '\n';
-        if (e->len >= TEXT_FLUSH)
-            emit_flush(e);
+    }
+}
+
+static void emit_binary(struct emitter *e, const struct payload *p)
+{
+    size_t esize = type_sizes[p->type];
+    uint64_t header = p->nbytes;
+    char hb[16];
+
+    b64_encode(&header, sizeof header, hb);
+    xml_out_check(e->o, xmlTextWriterWriteRaw(e->o->w, BAD_CAST hb));
+    for (size_t off = 0; off < p->nbytes && !e->o->failed; off += CHUNK) {
+        size_t len = p->nbytes - off < CHUNK ? p->nbytes - off : CHUNK;
+        const unsigned char *bytes = p->data ? p->data + off : e->chunk;
+        if (!p->data)
+            generate(p, off / esize, len / esize, e->chunk);
+        b64_encode(bytes, len, e->text);
+        xml_out_check(e->o, xmlTextWriterWriteRaw(e->o->w, BAD_CAST e->text));
     }
 }
 
 static void emit_payload(struct emitter *e, const struct payload *p,
                          int binary)
 {
-    size_t esize = type_sizes[p->type];
-
     if (binary) {
-        uint64_t header = p->nbytes;
-        char hb[16];
-        b64_encode(&header, sizeof header, hb);
-        xml_out_check(e->o, xmlTextWriterWriteRaw(e->o->w, BAD_CAST hb));
+        emit_binary(e, p);
     } else {
         xml_out_check(e->o, xmlTextWriterWriteRaw(e->o->w, BAD_CAST "\n"));
+        emit_ascii(e, p);
     }
-    for (size_t off = 0; off < p->nbytes && !e->o->failed; off += CHUNK) {
-        size_t len = p->nbytes - off < CHUNK ? p->nbytes - off : CHUNK;
-        const unsigned char *bytes = p->data ? p->data + off : e->chunk;
-        if (!p->data)
-            p->gen(off / esize, len / esize, e->chunk);
-        if (binary) {
-            b64_encode(bytes, len, e->text);
-            xml_out_check(e->o,
-                          xmlTextWriterWriteRaw(e->o->w, BAD_CAST e->text));
-        } else {
-            emit_ascii(e, p, bytes, off / esize, len / esize);
-        }
-    }
-    emit_flush(e);
 }
 
 static void write_array(struct emitter *e, const char *name,
@@ -239,7 +264,7 @@ static void write_point_data(struct emitter *e, const struct vtu_cloud *c,
         const struct vtu_field *f = &c->fields[i];
         struct payload p = { f->type, f->ncomp,
                              c->n * (size_t)f->ncomp * type_sizes[f->type],
-                             f->data, NULL };
+                             f->data, GEN_NONE };
         write_array(e, f->name, &p, binary);
     }
     xml_out_check(e->o, xmlTextWriterEndElement(w));
@@ -250,10 +275,10 @@ static void write_geometry(struct emitter *e, const struct vtu_cloud *c,
 {
     xmlTextWriterPtr w = e->o->w;
     struct payload pts = { VTU_FLOAT64, 3, 24 * c->n,
-                           (const unsigned char *)c->points, NULL };
-    struct payload conn = { VTU_INT64, 1, 8 * c->n, NULL, gen_connectivity };
-    struct payload offs = { VTU_INT64, 1, 8 * c->n, NULL, gen_offsets };
-    struct payload types = { VTU_UINT8, 1, c->n, NULL, gen_types };
+                           (const unsigned char *)c->points, GEN_NONE };
+    struct payload conn = { VTU_INT64, 1, 8 * c->n, NULL, GEN_INDEX };
+    struct payload offs = { VTU_INT64, 1, 8 * c->n, NULL, GEN_INDEX1 };
+    struct payload types = { VTU_UINT8, 1, c->n, NULL, GEN_ONE };
 
     xml_out_check(e->o, xmlTextWriterStartElement(w, BAD_CAST "Points"));
     write_array(e, NULL, &pts, binary);
@@ -268,12 +293,12 @@ static void write_geometry(struct emitter *e, const struct vtu_cloud *c,
 int vtu_write(const char *path, const struct vtu_cloud *c, int binary)
 {
     struct xml_out o;
-    struct emitter e = { &o, NULL, 0, NULL };
+    struct emitter e = { &o, NULL, NULL };
     xmlTextWriterPtr w;
     int rc;
 
     TRY(check_cloud(path, c));
-    e.text = sim_malloc(b64_encoded_len(CHUNK) + TEXT_FLUSH + 64);
+    e.text = sim_malloc(TEXT_SIZE + 1);
     e.chunk = sim_malloc(CHUNK);
     if (!e.text || !e.chunk) {
         rc = SIM_ERR_NOMEM;

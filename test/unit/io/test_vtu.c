@@ -14,6 +14,7 @@
 #include <float.h>
 #include <ftw.h>
 #include <math.h>
+#include <omp.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -250,6 +251,29 @@ static void test_binary_layout(void **state)
         assert_null(memchr(s, '\n', (size_t)(end - s)));
     }
     free(text);
+    vtu_cloud_free(&c);
+}
+
+/* ascii text is formatted by several threads: the bytes must not depend
+ * on how many (a block of 65536 values spans several slices). */
+static void test_ascii_threads(void **state)
+{
+    struct vtu_cloud c;
+    char path[128], *one, *three;
+    size_t n1, n3;
+    (void)state;
+    make_cloud(&c, 70001);
+    path_in(path, sizeof path, "threads.vtu");
+    omp_set_num_threads(1);
+    assert_int_equal(vtu_write(path, &c, 0), SIM_OK);
+    one = slurp(path, &n1);
+    omp_set_num_threads(3);
+    assert_int_equal(vtu_write(path, &c, 0), SIM_OK);
+    three = slurp(path, &n3);
+    assert_int_equal(n1, n3);
+    assert_memory_equal(one, three, n1);
+    free(one);
+    free(three);
     vtu_cloud_free(&c);
 }
 
@@ -563,6 +587,7 @@ int main(void)
         cmocka_unit_test(test_round_trip_binary),
         cmocka_unit_test(test_round_trip_ascii),
         cmocka_unit_test(test_binary_layout),
+        cmocka_unit_test(test_ascii_threads),
         cmocka_unit_test(test_foreign_variants),
         cmocka_unit_test(test_truncated),
         cmocka_unit_test(test_corrupted),
