@@ -338,6 +338,49 @@ static void test_guards(void **state)
     assert_int_equal(log_warning_count() - w0, 2);
 }
 
+/* E1-14 through the library calls the DEM side will make: one Table 1
+ * bead in still water, drag at every step with its current velocity and
+ * the force of eq. (35) (Model B) or (34) with the hydrostatic gradient
+ * (Model A). It must settle at the slip of the algebraic balance
+ * (rho_s - rho_f) V g = F^d/eps: 0.343 m/s at eps = 1 for both models, and
+ * the balance value at eps = 0.9 for Model B. */
+static double settle(enum coupling_model m, double eps)
+{
+    const struct drag_fluid w = { 1000, 1e-3 };
+    const double g[3] = { 0, 0, -9.81 }, rho_s = 2500, dt = 5e-5;
+    double d = 2.7e-3, V = M_PI * d * d * d / 6, mass = rho_s * V;
+    double u[3] = { 0, 0, 0 }, v[3] = { 0, 0, 0 }, F[3], Fi[3];
+    double gp[3] = { 0, 0, 1000 * g[2] };
+    uint8_t wet = 1;
+    for (int s = 0; s < 20000; s++) {    /* 1 s, ~17 relaxation times */
+        drag_ergun_wen_yu.force_all(&w, 1, &eps, &d, &V, u, v, F);
+        coupling_grain_force(m, 1, F, &eps, gp, &V, 1000, g, &wet, Fi);
+        for (int c = 0; c < 3; c++)
+            v[c] += dt * (g[c] + Fi[c] / mass);
+    }
+    return -v[2];
+}
+
+static void test_settling(void **state)
+{
+    (void)state;
+    double vb = settle(COUPLING_MODEL_B, 1.0);
+    double va = settle(COUPLING_MODEL_A, 1.0);
+    print_message("E1-14 settled slip: Model B %.5f m/s, Model A %.5f m/s "
+                  "(eps = 1)\n", vb, va);
+    assert_true(fabs(vb / 0.343 - 1) < 0.01);
+    assert_true(fabs(va / vb - 1) < 1e-9);
+    /* eps = 0.9, Model B: F^d(slip)/eps = (rho_s - rho_f) V g */
+    const struct drag_fluid w = { 1000, 1e-3 };
+    double d = 2.7e-3, V = M_PI * d * d * d / 6, eps = 0.9;
+    double v9 = settle(COUPLING_MODEL_B, eps);
+    double Fd = drag_ergun_wen_yu.coeff(&w, eps, v9, d) * V * v9;
+    print_message("E1-14 Model B at eps = 0.9: slip %.5f m/s, F^d/eps / "
+                  "submerged weight = %.8f\n", v9, Fd / eps /
+                  (1500 * V * 9.81));
+    assert_true(fabs(Fd / eps / (1500 * V * 9.81) - 1) < 1e-6);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -348,6 +391,7 @@ int main(void)
         cmocka_unit_test(test_mps_terms),
         cmocka_unit_test(test_settings),
         cmocka_unit_test(test_guards),
+        cmocka_unit_test(test_settling),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
