@@ -130,6 +130,16 @@ int coupling_guard_grain_size(int ng, const double *d, double re_s)
     return n;
 }
 
+long coupling_guard_porosity(long n_clamped, int np, double eps_min)
+{
+    if (n_clamped > 0)
+        log_warn("porosity below the floor porosityMin = %g at %ld of %d "
+                 "MPS particles (clamped): grains overlap within the "
+                 "coupling kernel; a larger kernelRadius smooths eq. (31)",
+                 eps_min, n_clamped, np);
+    return n_clamped;
+}
+
 int coupling_guard_relaxation(const struct drag_ops *drag,
                               const struct drag_fluid *f, int ng,
                               const double *eps_k, const double *u_k,

@@ -68,6 +68,10 @@ void coupling_correction_factor(enum coupling_model m, int np,
 /* Run-time guards (warnings, counts returned):
  * grains too large for the kernel (d > r_e,s / 3, METHODS.md A0-13). */
 int coupling_guard_grain_size(int ng, const double *d, double re_s);
+/* MPS particles whose porosity (31) fell below porosityMin and was
+ * clamped (n_clamped from coupling_porosity) out of np: a warning naming
+ * the floor. Returns n_clamped. */
+long coupling_guard_porosity(long n_clamped, int np, double eps_min);
 /* Drag relaxation time tau = rho_s / K shorter than the fluid step dt for
  * grains at porosity eps_k and slip |u_k - v_k| (an explicit exchange over
  * dt would overshoot; sub-stepping the drag on the DEM side is then

@@ -335,7 +335,9 @@ static void test_guards(void **state)
     /* Stokes: tau = rho_s d^2/(18 mu (1 + 0.15 Re^0.687)), Re = 1 */
     double tau = 2500 * 1e-10 / (18e-3 * (1 + 0.15));
     assert_true(fabs(tmin / tau - 1) < 1e-12);
-    assert_int_equal(log_warning_count() - w0, 2);
+    assert_int_equal(coupling_guard_porosity(0, 100, 0.3), 0);
+    assert_int_equal(coupling_guard_porosity(7, 100, 0.3), 7);
+    assert_int_equal(log_warning_count() - w0, 3);
 }
 
 /* E1-14 through the library calls the DEM side will make: one Table 1
