@@ -106,6 +106,13 @@ if grep -q 'format="ascii"' "$TMP/c3a/0/fluid.vtu" &&
    cmp -s <(sed -n '/^# x/,/^End/p' "$TMP/c3.dump") <(sed -n '/^# x/,/^End/p' "$TMP/c3a.dump")
 then pass ascii_equals_binary; else fail ascii_equals_binary "dumps differ"; fi
 
+# regions written as a dictionary { name { } } instead of a list ( name { } )
+newcase c3d 's/^regions$/regions/' 's/^($/{/' 's/^);$/}/'
+run c3d
+if grep -q '^{$' "$TMP/c3d/system/particleDict" && cmp -s "$TMP/c3/0/fluid.vtu" "$TMP/c3d/0/fluid.vtu" &&
+   cmp -s "$TMP/c3/0/dem.vtu" "$TMP/c3d/0/dem.vtu"; then pass regions_dict_form
+else fail regions_dict_form "regions { } gives other particles than regions ( )"; fi
+
 # running again rewrites the same files and keeps one pvd entry
 cp "$TMP/c3/0/dem.vtu" "$TMP/dem.first"
 run c3
