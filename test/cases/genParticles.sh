@@ -113,6 +113,13 @@ if grep -q '^{$' "$TMP/c3d/system/particleDict" && cmp -s "$TMP/c3/0/fluid.vtu" 
    cmp -s "$TMP/c3/0/dem.vtu" "$TMP/c3d/0/dem.vtu"; then pass regions_dict_form
 else fail regions_dict_form "regions { } gives other particles than regions ( )"; fi
 
+# without writeFormat here, system/controlDict's writeFormat is used
+newcase ctl '/^writeFormat/d'
+printf 'writeFormat ascii;\n' > "$TMP/ctl/system/controlDict"
+run ctl
+if grep -q 'format="ascii"' "$TMP/ctl/0/fluid.vtu" && ! grep -q 'format="binary"' "$TMP/ctl/0/dem.vtu"
+then pass writeFormat_from_controlDict; else fail writeFormat_from_controlDict "not ascii"; fi
+
 # running again rewrites the same files and keeps one pvd entry
 cp "$TMP/c3/0/dem.vtu" "$TMP/dem.first"
 run c3

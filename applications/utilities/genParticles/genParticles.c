@@ -55,6 +55,27 @@ static double kernel_radius_hint(const struct app *a)
     return re;
 }
 
+/* writeFormat of system/controlDict, so that the initial clouds look like
+ * what the solvers will write; binary when it is absent or unreadable. */
+static int control_binary(const struct app *a)
+{
+    static const char *const formats[] = { "ascii", "binary", NULL };
+    char path[4096];
+    struct dict *d;
+    int fmt = 1;
+
+    if (access(app_path(a, "system/controlDict", path, sizeof path), R_OK))
+        return 1;
+    if (dict_read(path, &d) == SIM_OK) {
+        if (dict_has(d, "writeFormat") &&
+            dict_get_word(d, "writeFormat", formats, &fmt) != SIM_OK)
+            fmt = 1; /* the solver will report it */
+        dict_free(d);
+    }
+    sim_error_clear();
+    return fmt;
+}
+
 /* rho and g, needed only for an initial hydrostatic pressure. */
 static int read_physics(const struct app *a, struct gen_case *c)
 {
@@ -272,7 +293,8 @@ static int run(const struct app *a)
 
     app_path(a, "system/particleDict", path, sizeof path);
     TRY_GOTO(rc, app_read_dict(a, "system/particleDict", &d), out);
-    TRY_GOTO(rc, gen_read(&c, d, path, kernel_radius_hint(a)), out);
+    TRY_GOTO(rc, gen_read(&c, d, path, kernel_radius_hint(a),
+                           control_binary(a)), out);
     TRY_GOTO(rc, read_physics(a, &c), out);
     TRY_GOTO(rc, gen_check_memory(&c), out);
     TRY_GOTO(rc, gen_mps(&c, &m), out);

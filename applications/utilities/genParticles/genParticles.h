@@ -75,9 +75,10 @@ struct dem_cloud {
 };
 
 /* particleDict.c: read and check the dictionary; kernel_radius_hint is
- * r_e / dp from system/mpsSchemes or 0 when unknown. */
+ * r_e / dp from system/mpsSchemes or 0 when unknown; binary_default the
+ * writeFormat of system/controlDict (1 binary, 0 ascii). */
 int gen_read(struct gen_case *c, const struct dict *d, const char *path,
-             double kernel_radius_hint);
+             double kernel_radius_hint, int binary_default);
 void gen_case_free(struct gen_case *c);
 
 /* generate.c */

@@ -363,7 +363,7 @@ static int mps_box(struct gen_case *c)
 }
 
 int gen_read(struct gen_case *c, const struct dict *d, const char *path,
-             double kernel_radius_hint)
+             double kernel_radius_hint, int binary_default)
 {
     long dim;
     int fmt;
@@ -381,7 +381,8 @@ int gen_read(struct gen_case *c, const struct dict *d, const char *path,
     if (!(c->dp > 0) || !isfinite(c->dp))
         return dict_error(d, "dp", SIM_ERR_DICT, "dp must be a positive "
                           "length [m], not %g", c->dp);
-    TRY(dict_get_word_or(d, "writeFormat", format_names, 1, &fmt));
+    TRY(dict_get_word_or(d, "writeFormat", format_names, binary_default != 0,
+                         &fmt));
     c->binary = fmt == 1;
     TRY(read_layers(c, kernel_radius_hint));
     TRY(dict_get_vector_or(d, "origin", 3, zero3, c->origin));
