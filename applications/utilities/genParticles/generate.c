@@ -32,6 +32,7 @@
 
 #include "core/dict.h"
 #include "core/error.h"
+#include "core/log.h"
 #include "genParticles.h"
 
 #define TOL 1e-9 /* in units of the spacing */
@@ -170,6 +171,9 @@ int gen_check_memory(const struct gen_case *c)
                           "of this machine (or over 2^31 particles): "
                           "increase dp or the grain spacing, or shrink the "
                           "regions", bytes, sites, grains, phys);
+    log_info("Memory estimate: %.3g MB for at most %.3g lattice sites and "
+             "%.3g grains (%.3g MB available)", bytes / 1e6, sites, grains,
+             phys / 1e6);
     return SIM_OK;
 }
 
