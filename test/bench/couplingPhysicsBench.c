@@ -1,0 +1,112 @@
+/* couplingPhysicsBench.c — cost of the coupling physics per fluid step
+ * (src/coupling: pairs, porosity, interpolation, reaction, drag), on the
+ * seed paper's two-phase dam break layout (METHODS.md A.12.2, A0-17): a
+ * 0.05 x 0.1 x 0.1 m water column on the lattice dp, and the 7425 Table 1
+ * beads (15 x 33 x 15, d = 2.7 mm) at its bottom; r_e,s = 4.1 dp (A0-13).
+ *
+ * One fluid step of the sequential scheme (A.10) costs: 2 pair builds and
+ * 2 porosity evaluations (steps 2 and 5), 1 interpolation (step 3),
+ * 1 reaction (step 6), and N_sub = 100 drag + Model B force evaluations on
+ * the DEM side (step 4). Each phase is timed as the minimum over repeats
+ * (wall clock), the robust statistic on a shared machine.
+ *
+ * Usage: couplingPhysicsBench [repeats]   (default 10) */
+#include <math.h>
+#include <omp.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+
+#include "coupling/drag/drag.h"
+#include "coupling/interp.h"
+#include "coupling/models.h"
+#include "coupling/pairs.h"
+#include "coupling/porosity.h"
+#include "coupling/reaction.h"
+
+enum { NG = 7425 };
+
+static double best(double a, double b) { return a < b ? a : b; }
+
+static void run(double dp, int R)
+{
+    const double d = 2.7e-3, re = 4.1 * dp, g[3] = { 0, 0, -9.81 };
+    int nx = (int)(0.05 / dp), ny = (int)(0.1 / dp), nz = (int)(0.1 / dp);
+    int np = nx * ny * nz, n = 0;
+    double *xp = malloc(3 * sizeof(double) * np), *u = calloc(3 * np, 8);
+    double *eps = malloc(8 * (size_t)np), *fA = malloc(24 * (size_t)np);
+    for (int i = 0; i < nx; i++)
+        for (int j = 0; j < ny; j++)
+            for (int k = 0; k < nz; k++, n++) {
+                xp[3 * n] = (i + 0.5) * dp;
+                xp[3 * n + 1] = (j + 0.5) * dp;
+                xp[3 * n + 2] = (k + 0.5) * dp;
+                u[3 * n] = 0.01 * sin(n);
+            }
+    static double xg[3 * NG], V[NG], dg[NG], ek[NG], uk[3 * NG], gk[3 * NG];
+    static double vg[3 * NG], F[3 * NG], Fi[3 * NG];
+    static uint8_t wet[NG];
+    int ng = 0;
+    for (int i = 0; i < 15; i++)
+        for (int j = 0; j < 33; j++)
+            for (int k = 0; k < 15; k++, ng++) {
+                xg[3 * ng] = 0.0047 + i * d;
+                xg[3 * ng + 1] = 0.00545 + j * d;
+                xg[3 * ng + 2] = dp + d / 2 + k * d;
+                V[ng] = M_PI * d * d * d / 6;
+                dg[ng] = d;
+                vg[3 * ng + 2] = -0.01;
+            }
+    struct coupling_pairs P = { 0 };
+    struct coupling_grain_fields G = { ek, uk, gk, wet };
+    const struct drag_fluid w = { 1000, 1e-3 };
+    double tb = 1e30, tp = 1e30, ti = 1e30, tr = 1e30, td = 1e30, t;
+    long nclamp = 0;
+    coupling_pairs_build(&P, 3, re, NG, xg, np, xp);
+    for (int r = 0; r < R; r++) {
+        t = omp_get_wtime();
+        coupling_pairs_build(&P, 3, re, NG, xg, np, xp);
+        tb = best(tb, omp_get_wtime() - t);
+        t = omp_get_wtime();
+        coupling_porosity(&P, V, 0.3, eps, NULL, &nclamp);
+        tp = best(tp, omp_get_wtime() - t);
+        t = omp_get_wtime();
+        coupling_interp_grains(&P, NULL, eps, u, NULL, &G);
+        ti = best(ti, omp_get_wtime() - t);
+        t = omp_get_wtime();
+        for (int s = 0; s < 100; s++) {
+            drag_ergun_wen_yu.force_all(&w, NG, ek, dg, V, uk, vg, F);
+            coupling_grain_force(COUPLING_MODEL_B, NG, F, ek, NULL, V, 1000,
+                                 g, wet, Fi);
+        }
+        td = best(td, omp_get_wtime() - t);
+        t = omp_get_wtime();
+        coupling_reaction(&P, NULL, F, dp * dp * dp, fA, NULL);
+        tr = best(tr, omp_get_wtime() - t);
+    }
+    double total = 2 * tb + 2 * tp + ti + tr + td;
+    printf("%7.4f %8d %6d %9lld %8.2f %8.2f %8.2f %8.2f %9.2f %9.1f %8.0fx\n",
+           dp, np, NG, (long long)P.npair, 1e3 * tb, 1e3 * tp, 1e3 * ti,
+           1e3 * tr, 1e3 * td, 1e3 * total, 3.25 / total);
+    coupling_pairs_free(&P);
+    free(xp);
+    free(u);
+    free(eps);
+    free(fA);
+}
+
+int main(int argc, char **argv)
+{
+    int R = argc > 1 ? atoi(argv[1]) : 10;
+    printf("# coupling physics per fluid step, %d threads, best of %d\n",
+           omp_get_max_threads(), R);
+    printf("# step = 2 pairs + 2 porosity + interp + reaction + 100 x "
+           "(drag + Model B force); 'vs paper' = 3.25 s (Table 2, DEM + "
+           "coupling, which also includes the DEM contacts)\n");
+    printf("#    dp       np     ng     pairs pairs_ms   por_ms interp_ms "
+           "react_ms drag100_ms step_ms vs_paper\n");
+    const double dps[] = { 0.002, 0.0027, 0.003 };
+    for (int i = 0; i < 3; i++)
+        run(dps[i], R);
+    return 0;
+}
