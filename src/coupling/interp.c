@@ -50,7 +50,6 @@ void coupling_interp_grains(const struct coupling_pairs *P,
                             const double *u, const double *gradp_p,
                             struct coupling_grain_fields *out)
 {
-    const double one = 1.0;
 #pragma omp parallel for schedule(dynamic, 16)
     for (int k = 0; k < P->ng; k++) {
         double ws = 0, se = 0, su[3] = { 0, 0, 0 }, sg[3] = { 0, 0, 0 };
@@ -70,7 +69,7 @@ void coupling_interp_grains(const struct coupling_pairs *P,
         }
         int wet = ws > 0;
         out->wet[k] = (uint8_t)wet;
-        out->eps[k] = wet ? se / ws : one;
+        out->eps[k] = wet ? se / ws : 1.0;
         for (int c = 0; c < 3; c++) {
             out->u[3 * k + c] = wet ? su[c] / ws : 0.0;
             if (out->gradp)

@@ -31,7 +31,8 @@ void coupling_shepard(const struct coupling_pairs *P, int ncomp,
                       const double *f, const uint8_t *mask, const double *def,
                       double *out, double *wsum);
 
-/* Per-grain fluid fields, arrays owned by the caller (ng or 3 ng). */
+/* Per-grain fluid fields, arrays owned by the caller (ng or 3 ng); all
+ * but gradp are required. */
 struct coupling_grain_fields {
     double *eps;    /* ng   porosity at the centre, eq. (32)           */
     double *u;      /* 3 ng intrinsic fluid velocity [m/s], eq. (33)   */

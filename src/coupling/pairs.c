@@ -1,6 +1,14 @@
 /*
- * pairs.c — grain / MPS-particle pairs by cells of size >= r_e,s
+ * pairs.c — grain / MPS-particle pairs by cells of size r_e,s/2
  * (METHODS.md A.10 step 1); see pairs.h for the layout and guarantees.
+ *
+ * A build is: bin the particles of the grain box (counting sort, with a
+ * cell-ordered copy of their positions); one pass per grain over its
+ * stencil into per-thread row buffers (each buffer first grown to hold
+ * every candidate, so rows are never computed twice); a prefix sum over
+ * grains; then a copy into place and a transpose by contiguous grain
+ * chunks whose per-particle cursors keep every particle row in ascending
+ * grain order, so the result does not depend on the number of threads.
  *
  * Only the box around the grains is binned, so a dam break with a small
  * sediment patch pays for the particles near the patch. The cell count is
@@ -146,7 +154,8 @@ static int64_t grain_row_cells(const struct coupling_pairs *P, const double *xk,
     return m;
 }
 
-/* Box of the grains expanded by re, cut into cells of size h >= re. */
+/* Box of the grains expanded by re, cut into cells of size h = re/2 (or
+ * larger under the cell cap), with a stencil of `reach` cells. */
 static int make_grid(struct coupling_pairs *P, int ng, const double *xg,
                      int np)
 {
