@@ -4,13 +4,16 @@
  * Any input must either parse or fail with a located message, never crash,
  * hang or leak. Whatever parses is expanded, parsed again and expanded
  * again: the two texts must be equal (dict_write_expanded's promise), and
- * the getters are exercised on the first entries with every type.
+ * the getters are exercised on the first entries with every type. Then
+ * dict_set_in_file edits a copy of the input (in /dev/shm): it must either
+ * fail with a message or leave a file whose entry reads back as the value.
  * Build and run with test/fuzz/run.
  */
 #include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <unistd.h>
 
 #include "core/dict.h"
 #include "core/error.h"
@@ -70,6 +73,86 @@ static void poke(const struct dict *d, int depth)
     sim_error_clear();
 }
 
+static char workdir[64];
+
+static void remove_workdir(void)
+{
+    char path[128];
+    snprintf(path, sizeof path, "%s/input", workdir);
+    unlink(path);
+    rmdir(workdir);
+}
+
+static const char *work_file(void)
+{
+    static char path[128];
+    if (!workdir[0]) {
+        snprintf(workdir, sizeof workdir, "/dev/shm/fuzz_dict.XXXXXX");
+        if (!mkdtemp(workdir)) {
+            snprintf(workdir, sizeof workdir, "/tmp/fuzz_dict.XXXXXX");
+            if (!mkdtemp(workdir))
+                abort();
+        }
+        atexit(remove_workdir);
+        snprintf(path, sizeof path, "%s/input", workdir);
+    }
+    return path;
+}
+
+static void check_set(const uint8_t *data, size_t size, const struct dict *d)
+{
+    static const char *const values[] = { "42", "(1 2 3)", "{ x 1; }",
+                                          "word", "\"s;\"" };
+    char key[256];
+    const char *value = values[size % 5];
+    if (dict_size(d) == 0 || strlen(dict_key_at(d, 0)) > 100)
+        return;
+    const char *k0 = dict_key_at(d, 0);
+    if (strchr(k0, '/'))
+        return; /* a quoted key with '/' is not a path */
+    if (size % 3 == 1)
+        snprintf(key, sizeof key, "%s/newKey", k0);
+    else if (size % 3 == 2)
+        snprintf(key, sizeof key, "brandNew/%s", k0);
+    else
+        snprintf(key, sizeof key, "%s", k0);
+    const char *path = work_file();
+    FILE *f = fopen(path, "wb");
+    if (!f)
+        abort();
+    fwrite(data, 1, size, f);
+    fclose(f);
+    if (dict_set_in_file(path, key, value) != SIM_OK) {
+        if (sim_error_message()[0] == '\0')
+            abort();
+        sim_error_clear();
+        return;
+    }
+    struct dict *e;
+    if (dict_read(path, &e) != SIM_OK) {
+        fprintf(stderr, "edited file does not parse: %s\n",
+                sim_error_message());
+        abort();
+    }
+    const struct dict_value *v;
+    if (dict_get_value(e, key, &v) != SIM_OK)
+        abort();
+    char *buf = NULL;
+    size_t len = 0;
+    FILE *m = open_memstream(&buf, &len);
+    dict_write_value(v, m);
+    fclose(m);
+    int same = strcmp(buf, values[size % 5]) == 0
+               || (size % 5 == 2 && strcmp(buf, "{\n    x               1;\n}")
+                                        == 0);
+    if (!same) {
+        fprintf(stderr, "set %s=%s gave %s\n", key, value, buf);
+        abort();
+    }
+    free(buf);
+    dict_free(e);
+}
+
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 {
     struct dict *d, *d2;
@@ -96,6 +179,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     }
     poke(d, 0);
     dict_warn_unused(d);
+    check_set(data, size, d);
     free(t1);
     free(t2);
     dict_free(d2);
