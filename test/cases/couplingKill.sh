@@ -22,7 +22,7 @@ TIMEOUT=1.0    # handshake time-out of the peers [s]
 ms() { printf '0.%03d' "$1"; }   # milliseconds (< 1000) as seconds
 
 ok=0; slow=0; silent=0; nostate=0; left=0; badvictim=0
-worst=0; worst_at=""
+worst=0; worst_at=""; worst_seen=0   # worst_seen: victim had attached
 declare -A how
 for i in $(seq "$N"); do
     c="$TMP/k$i"
@@ -87,6 +87,10 @@ for i in $(seq "$N"); do
     at=$(grep -m1 -o -E 'in (handshake|channel_recv|channel_send_begin|connect_segment) ' "$c/log.$ss")
     key="$key, ${at:-elsewhere}"
     how[$key]=$(( ${how[$key]:-0} + 1 ))
+    case "$key" in
+        "died without"*|"exited before"*)
+            [ "$(echo "$delay > $worst_seen" | bc)" = 1 ] && worst_seen=$delay ;;
+    esac
     rm -rf "$c"
 done 2> "$TMP/stderr"   # bash reports each killed job there
 grep -v ' Killed ' "$TMP/stderr" >&2
@@ -94,6 +98,8 @@ grep -v ' Killed ' "$TMP/stderr" >&2
 echo "survivor messages, and where the survivor was waiting:"
 for k in "${!how[@]}"; do printf '  %4d  %s\n' "${how[$k]}" "$k"; done
 echo "worst exit delay after the kill: $worst s ($worst_at)"
+echo "worst exit delay when the victim had attached (seen through its pidfd): $worst_seen s"
+echo "(otherwise the survivor never saw a peer and stops at its $TIMEOUT s time-out)"
 [ $badvictim -gt 0 ] && echo "note: $badvictim victims were not killed by SIGKILL (they had already stopped)"
 
 [ $silent -eq 0 ] && echo "PASS couplingKill: $N kills, every survivor stopped with exit != 0 and a message" \
