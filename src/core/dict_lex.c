@@ -25,6 +25,9 @@ void lex_init(struct lexer *lx, const char *text, size_t len, const char *file)
     lx->line = 1;
     lx->col = 1;
     lx->file = file;
+    /* a UTF-8 byte-order mark written by some editors is not a word */
+    if (len >= 3 && memcmp(text, "\xEF\xBB\xBF", 3) == 0)
+        lx->pos = 3;
 }
 
 void lex_release(struct lexer *lx)

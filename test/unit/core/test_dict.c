@@ -59,6 +59,10 @@ static void test_structure(void **state)
         "a 1;\nsub { x 2; inner { y 3; } }\nempty;\n");
     assert_int_equal(dict_size(d), 4);
     assert_string_equal(dict_key_at(d, 0), "FoamFile");
+    struct dict *bom = parse("\xEF\xBB\xBF" "FoamFile { }\r\na\t1;\r\n");
+    assert_string_equal(dict_key_at(bom, 0), "FoamFile");
+    assert_true(dict_has(bom, "a"));
+    dict_free(bom);
     assert_string_equal(dict_key_at(d, 3), "empty");
     assert_null(dict_key_at(d, 4));
     assert_true(dict_has(d, "sub/inner/y"));
