@@ -398,6 +398,29 @@ static void test_foreign_file_refused(void **state)
     unlink(path);
 }
 
+static void test_other_protocol_version_refused(void **state)
+{
+    char name[64], path[128];
+    struct channel_settings s;
+    struct channel *c;
+    struct chan_header h;
+    (void)state;
+    unique_name(name, sizeof name);
+    snprintf(path, sizeof path, "/dev/shm%s", name);
+    memset(&h, 0, sizeof h);
+    h.magic = CHAN_MAGIC;
+    h.version = CHANNEL_PROTOCOL_VERSION + 1;
+    int fd = open(path, O_CREAT | O_WRONLY, 0600);
+    assert_true(fd >= 0);
+    assert_int_equal(write(fd, &h, sizeof h), (ssize_t)sizeof h);
+    close(fd);
+    test_settings(&s, CHANNEL_SOLID, name);
+    assert_int_equal(channel_open(&s, &c), SIM_ERR_INPUT);
+    assert_non_null(strstr(sim_error_message(), "protocol version 1"));
+    assert_non_null(strstr(sim_error_message(), "version 2)"));
+    unlink(path);
+}
+
 /* ---- corruption ----------------------------------------------------------- */
 
 static void test_corrupted_frame_detected(void **state)
@@ -438,6 +461,7 @@ int main(void)
         cmocka_unit_test(test_stale_segment_replaced),
         cmocka_unit_test(test_second_pair_refused),
         cmocka_unit_test(test_foreign_file_refused),
+        cmocka_unit_test(test_other_protocol_version_refused),
         cmocka_unit_test(test_corrupted_frame_detected),
     };
     log_set_quiet(1);
