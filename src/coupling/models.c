@@ -26,7 +26,14 @@
  * sum_i rho eps_i V_i a_A,i = -sum_i V_i f_A,i = -sum_k F_bar_k is exact
  * (E1-13). Model B's fluid side -sum_i V_i f_A,i/eps_i and the grains'
  * sum_k F_k/eps_k agree only up to the difference between eps_i and eps_k
- * within a kernel radius: that is the model as published.
+ * within a kernel radius: that is the model as published, and the default.
+ * For the 7425-bead block of the dam break with a uniform drag the two
+ * differ by 2.2 % (r_e,s = 4.1 dp), 1.8 % (3.0 dp), 1.4 % (2.1 dp).
+ * `conservativeReaction yes;` [P] distributes F_bar_k/eps_k instead and
+ * drops one 1/eps_i on the fluid side, so that the fluid receives exactly
+ * what the grains feel in (35): sum_i rho eps_i V_i a_i = -sum_k F_k/eps_k.
+ * (Buoyancy, -V_k rho_f g on the grains and g (1/eps_i - 1) on the fluid,
+ * balances only as far as sum_i V_i w_s(r_ik) approximates n_s.)
  */
 #include "coupling/models.h"
 
@@ -51,6 +58,11 @@ int coupling_settings_read(const struct dict *d, struct coupling_settings *s)
         return dict_error(d, "kernelRadius", SIM_ERR_DICT,
                           "kernelRadius %g (coupling kernel radius in units "
                           "of dp) must be > 0", s->radius);
+    TRY(dict_get_bool_or(d, "conservativeReaction", 0, &s->conservative));
+    if (s->conservative && s->model == COUPLING_MODEL_A)
+        return dict_error(d, "conservativeReaction", SIM_ERR_DICT,
+                          "conservativeReaction applies to model B only "
+                          "(model A's reaction is already exact)");
     TRY(dict_get_scalar_or(d, "porosityMin", 0.3, &s->eps_min));
     if (!(s->eps_min > 0 && s->eps_min < 1))
         return dict_error(d, "porosityMin", SIM_ERR_DICT,
@@ -79,10 +91,24 @@ void coupling_grain_force(enum coupling_model m, int ng, const double *Fd,
     }
 }
 
-void coupling_mps_accel(enum coupling_model m, int np, const double *eps,
-                        const double *fA, double rho_f, const double g[3],
-                        const uint8_t *rows, double *a)
+void coupling_reaction_input(enum coupling_model m, int conservative, int ng,
+                             const double *Fbar, const double *eps_k,
+                             double *out)
 {
+    int divide = m == COUPLING_MODEL_B && conservative;
+    for (int k = 0; k < ng; k++)
+        for (int c = 0; c < 3; c++)
+            out[3 * k + c] = divide ? Fbar[3 * k + c] / eps_k[k]
+                                    : Fbar[3 * k + c];
+}
+
+void coupling_mps_accel(enum coupling_model m, int conservative, int np,
+                        const double *eps, const double *fA, double rho_f,
+                        const double g[3], const uint8_t *rows, double *a)
+{
+    /* Model B divides the reaction by eps_i once more, unless the grains
+     * already did (conservative form). */
+    int extra = m == COUPLING_MODEL_B && !conservative;
 #pragma omp parallel for schedule(static)
     for (int i = 0; i < np; i++) {
         if (rows && !rows[i])
@@ -90,9 +116,11 @@ void coupling_mps_accel(enum coupling_model m, int np, const double *eps,
         double inv = 1.0 / eps[i];
         for (int c = 0; c < 3; c++) {
             double f = fA[3 * (int64_t)i + c] / rho_f * inv;
+            if (extra)
+                f *= inv;
             a[3 * (int64_t)i + c] = m == COUPLING_MODEL_A
                                         ? -f
-                                        : -f * inv + g[c] * (inv - 1.0);
+                                        : -f + g[c] * (inv - 1.0);
         }
     }
 }

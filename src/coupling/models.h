@@ -10,9 +10,12 @@
  *
  * Fluid side (mpsFluid), with intrinsic velocity u stored and eps_i frozen
  * over the step (A0-01), u_d = eps u:
+ *   step 6, reaction    f_A,i of eq. (36) distributes per grain
+ *       A, B: F_bar_k      B with conservativeReaction: F_bar_k / eps_k
  *   step 7, prediction  u* = u^m + dt [ visc + g + a_i ]
  *       A: a_i = -f_A,i / (rho_f eps_i)
  *       B: a_i = -f_A,i / (rho_f eps_i^2) + g (1/eps_i - 1)
+ *       B conservative: a_i = -f_i / (rho_f eps_i) + g (1/eps_i - 1)
  *   step 9, PPE source  s_i x [ (1-gamma)(rho/dt) div u* - gamma (rho/dt^2)
  *                               (n - n0)/n0 ]
  *       A: s_i = 1 (12)         B: s_i = eps_i (13)
@@ -37,6 +40,7 @@ struct coupling_settings {
     const struct drag_ops *drag;    /* `dragModel` (default ergunWenYu)   */
     double radius;                  /* `kernelRadius` r_e,s / dp (4.1)    */
     double eps_min;                 /* `porosityMin` (0.3)                */
+    int conservative;               /* `conservativeReaction` (no), B only */
 };
 
 /* Read the entries above; errors cite couplingDict's file and line. */
@@ -52,12 +56,21 @@ void coupling_grain_force(enum coupling_model m, int ng, const double *Fd,
                           const double *V, double rho_f, const double g[3],
                           const uint8_t *wet, double *Fint);
 
+/* What eq. (36) distributes (step 6), 3 ng [N]: F_bar_k, or F_bar_k/eps_k
+ * for Model B with conservative set (the fluid then receives exactly the
+ * drag part of (35), to round-off, instead of sum_i V_i f_A,i/eps_i, which
+ * differs from sum_k F_k/eps_k by ~2 % in a packed bed: see models.c). */
+void coupling_reaction_input(enum coupling_model m, int conservative, int ng,
+                             const double *Fbar, const double *eps_k,
+                             double *out);
+
 /* Extra acceleration a_i of the prediction (step 7), 3 np [m/s^2], from
- * the reaction fA (3 np) of eq. (36); rows (may be NULL) limits the
- * particles written. */
-void coupling_mps_accel(enum coupling_model m, int np, const double *eps,
-                        const double *fA, double rho_f, const double g[3],
-                        const uint8_t *rows, double *a);
+ * the reaction fA (3 np) of eq. (36) (computed from
+ * coupling_reaction_input with the same conservative flag); rows (may be
+ * NULL) limits the particles written. */
+void coupling_mps_accel(enum coupling_model m, int conservative, int np,
+                        const double *eps, const double *fA, double rho_f,
+                        const double g[3], const uint8_t *rows, double *a);
 
 /* PPE source factor s_i (step 9) and correction factor c_i (step 10), np. */
 void coupling_ppe_source_factor(enum coupling_model m, int np,

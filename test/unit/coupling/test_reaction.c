@@ -242,7 +242,7 @@ static void test_mps_terms(void **state)
             fA[3 * i + q] = 0.0;
     }
     for (int m = COUPLING_MODEL_A; m <= COUPLING_MODEL_B; m++) {
-        coupling_mps_accel(m, NP, eps, fA, rho, g, NULL, a);
+        coupling_mps_accel(m, 0, NP, eps, fA, rho, g, NULL, a);
         coupling_ppe_source_factor(m, NP, eps, s);
         coupling_correction_factor(m, NP, eps, c);
         for (int i = 0; i < NP; i++) {
@@ -260,14 +260,14 @@ static void test_mps_terms(void **state)
     for (int i = 0; i < NP; i++)
         for (int q = 0; q < 3; q++)
             fA[3 * i + q] = urand() - 0.5;
-    coupling_mps_accel(COUPLING_MODEL_A, NP, eps, fA, rho, g, NULL, a);
+    coupling_mps_accel(COUPLING_MODEL_A, 0, NP, eps, fA, rho, g, NULL, a);
     for (int i = 0; i < NP; i++) {
         sf += Vp * fA[3 * i];
         sa += rho * eps[i] * Vp * a[3 * i];
     }
     assert_true(fabs(sa + sf) <= 1e-12 * fabs(sf));
     /* B: a = -f_A/(rho eps^2) + g (1/eps - 1), per particle */
-    coupling_mps_accel(COUPLING_MODEL_B, NP, eps, fA, rho, g, NULL, a);
+    coupling_mps_accel(COUPLING_MODEL_B, 0, NP, eps, fA, rho, g, NULL, a);
     for (int i = 0; i < NP; i++)
         for (int q = 0; q < 3; q++) {
             double ex = -fA[3 * i + q] / (rho * eps[i] * eps[i]) +
@@ -277,8 +277,74 @@ static void test_mps_terms(void **state)
     /* rows: untouched outside */
     uint8_t rows[2] = { 0, 1 };
     double a2[6] = { 7, 7, 7, 7, 7, 7 };
-    coupling_mps_accel(COUPLING_MODEL_A, 2, eps, fA, rho, g, rows, a2);
+    coupling_mps_accel(COUPLING_MODEL_A, 0, 2, eps, fA, rho, g, rows, a2);
     assert_true(a2[0] == 7 && a2[3] != 7);
+}
+
+/* Model B through the whole chain on a packed block: the literal
+ * reaction differs from the grains' sum_k F_k/eps_k (reported); the
+ * conservative option matches it to round-off. */
+static void test_model_b_momentum(void **state)
+{
+    (void)state;
+    enum { NGS = 6, NG = NGS * NGS * NGS, NS = 16, NP = NS * NS * NS };
+    static double xg[3 * NG], Vg[NG], F[3 * NG], Fin[3 * NG], ek[NG];
+    static double uk[3 * NG], xp[3 * NP], up[3 * NP], eps[NP];
+    static double fA[3 * NP], a[3 * NP];
+    static uint8_t wet[NG];
+    const double dp = 2.7e-3, d = 2.7e-3, Vp = dp * dp * dp, g0[3] = { 0 };
+    int n = 0;
+    for (int i = 0; i < NS; i++)
+        for (int j = 0; j < NS; j++)
+            for (int k = 0; k < NS; k++, n++) {
+                xp[3 * n] = i * dp;
+                xp[3 * n + 1] = j * dp;
+                xp[3 * n + 2] = k * dp;
+            }
+    n = 0;
+    for (int i = 0; i < NGS; i++)
+        for (int j = 0; j < NGS; j++)
+            for (int k = 0; k < NGS; k++, n++) {
+                xg[3 * n] = 0.012 + i * d + 1e-4 * urand();
+                xg[3 * n + 1] = 0.012 + j * d + 1e-4 * urand();
+                xg[3 * n + 2] = 0.012 + k * d + 1e-4 * urand();
+                Vg[n] = M_PI * d * d * d / 6;
+                for (int c = 0; c < 3; c++)
+                    F[3 * n + c] = 1e-5 * (urand() - 0.3);
+            }
+    struct coupling_pairs P = { 0 };
+    struct coupling_grain_fields G = { ek, uk, NULL, wet };
+    assert_int_equal(coupling_pairs_build(&P, 3, 4.1 * dp, NG, xg, NP, xp),
+                     0);
+    assert_int_equal(coupling_porosity(&P, Vg, 0.3, eps, NULL, NULL), 0);
+    coupling_interp_grains(&P, NULL, eps, up, NULL, &G);
+    double target[3] = { 0, 0, 0 };
+    for (int k = 0; k < NG; k++)
+        for (int c = 0; c < 3; c++)
+            target[c] -= F[3 * k + c] / ek[k];   /* what the fluid owes */
+    for (int cons = 0; cons <= 1; cons++) {
+        coupling_reaction_input(COUPLING_MODEL_B, cons, NG, F, ek, Fin);
+        assert_int_equal(coupling_reaction(&P, NULL, Fin, Vp, fA, NULL), 0);
+        coupling_mps_accel(COUPLING_MODEL_B, cons, NP, eps, fA, 1000, g0,
+                           NULL, a);
+        double got[3] = { 0, 0, 0 }, err = 0;
+        for (int i = 0; i < NP; i++)
+            for (int c = 0; c < 3; c++)
+                got[c] += 1000 * eps[i] * Vp * a[3 * i + c];
+        for (int c = 0; c < 3; c++)
+            err = fmax(err, fabs(got[c] - target[c]) / fabs(target[c]));
+        print_message("Model B %s reaction: fluid momentum rate vs "
+                      "-sum F/eps_k, worst relative difference %.2e\n",
+                      cons ? "conservative" : "literal", err);
+        if (cons)
+            assert_true(err < 1e-12);
+        else
+            assert_true(err > 1e-4);   /* the published form is not exact */
+    }
+    /* model A ignores the flag */
+    coupling_reaction_input(COUPLING_MODEL_A, 1, NG, F, ek, Fin);
+    assert_memory_equal(Fin, F, sizeof F);
+    coupling_pairs_free(&P);
 }
 
 static int read_settings(const char *text, struct coupling_settings *s)
@@ -306,6 +372,13 @@ static void test_settings(void **state)
     assert_int_equal(s.model, COUPLING_MODEL_A);
     assert_ptr_equal(s.drag, &drag_gidaspow_blend);
     assert_true(s.radius == 3.0 && s.eps_min == 0.25);
+    assert_int_equal(s.conservative, 0);
+    assert_int_equal(read_settings("model B; conservativeReaction yes;\n",
+                                   &s), 0);
+    assert_int_equal(s.conservative, 1);
+    assert_int_equal(read_settings("model A; conservativeReaction yes;\n",
+                                   &s), SIM_ERR_DICT);
+    assert_non_null(strstr(sim_error_message(), "conservativeReaction"));
     assert_int_equal(read_settings("model C;\n", &s), SIM_ERR_DICT);
     assert_non_null(strstr(sim_error_message(), "system/couplingDict:1"));
     assert_int_equal(read_settings("kernelRadius -1;\n", &s), SIM_ERR_DICT);
@@ -391,6 +464,7 @@ int main(void)
         cmocka_unit_test(test_mss_loop),
         cmocka_unit_test(test_grain_force),
         cmocka_unit_test(test_mps_terms),
+        cmocka_unit_test(test_model_b_momentum),
         cmocka_unit_test(test_settings),
         cmocka_unit_test(test_guards),
         cmocka_unit_test(test_settling),
