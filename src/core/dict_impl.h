@@ -23,6 +23,7 @@
 struct arena_block;
 struct arena {
     struct arena_block *head;
+    size_t bytes;           /* handed out so far                           */
 };
 void *arena_alloc(struct arena *a, size_t n);   /* zeroed, 16-aligned */
 char *arena_strndup(struct arena *a, const char *s, size_t n);

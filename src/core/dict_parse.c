@@ -28,6 +28,10 @@
 
 #define MAX_INCLUDE_DEPTH 32
 #define MAX_NESTING 200
+/* $var copies may not grow the parsed data beyond this many bytes plus a
+ * multiple of the text read: "b ($a $a); c ($b $b); ..." doubles per line */
+#define COPY_BUDGET_BASE (128u << 20)
+#define COPY_BUDGET_PER_BYTE 64
 
 struct inc_frame {
     const char *display; /* as written in messages (arena)    */
@@ -41,6 +45,7 @@ struct parser {
     struct inc_frame inc[MAX_INCLUDE_DEPTH + 1];
     int ninc;
     int nesting;
+    size_t text_bytes;        /* read so far, includes too      */
     struct dict_value *stack; /* scratch values being collected */
     size_t sp, scap;
 };
@@ -220,12 +225,23 @@ static void relocate(struct dict_value *v, const char *file,
     v->col = t->col;
 }
 
+static int copy_budget(const struct parser *p, const struct token *t)
+{
+    size_t budget = COPY_BUDGET_BASE + COPY_BUDGET_PER_BYTE * p->text_bytes;
+    if (p->root->arena.bytes <= budget)
+        return SIM_OK;
+    return perr(p, t->line, t->col, "'%.*s': substitutions make the "
+                "dictionary larger than %zu MB (a $var doubling itself?)",
+                (int)(t->len > 60 ? 60 : t->len), t->start, budget >> 20);
+}
+
 /* `$var` in a value: push copies of the referenced entry's values. */
 static int splice_var(struct parser *p, struct dict *d, const struct token *t,
                       const char *name)
 {
     struct dict_entry *e;
     TRY(resolve_var(p, d, t, &e));
+    TRY(copy_budget(p, t));
     const struct dict_value *src = e->val;
     if (src->kind == DICT_DICT) {
         struct dict_value *v = push(p, t, DICT_DICT);
@@ -268,6 +284,7 @@ static int parse_merge(struct parser *p, struct dict *d, const struct token *t)
             return perr(p, t->line, t->col,
                         "cannot merge '%.*s' into itself", (int)t->len,
                         t->start);
+    TRY(copy_budget(p, t));
     return dict_merge_into(d, src);
 }
 
@@ -562,6 +579,7 @@ static int parse_text(struct parser *p, struct dict *d, const char *text,
     struct lexer lx, *saved = p->lx;
     lex_init(&lx, text, len, display);
     p->lx = &lx;
+    p->text_bytes += len;
     int rc = parse_body(p, d, NULL, 1, NULL);
     lex_release(&lx);
     p->lx = saved;

@@ -47,6 +47,7 @@ void *arena_alloc(struct arena *a, size_t n)
     }
     void *p = b->data + b->used;
     b->used += n;
+    a->bytes += n;
     memset(p, 0, n);
     return p;
 }
