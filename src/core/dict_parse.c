@@ -32,6 +32,7 @@
  * multiple of the text read: "b ($a $a); c ($b $b); ..." doubles per line */
 #define COPY_BUDGET_BASE (128u << 20)
 #define COPY_BUDGET_PER_BYTE 64
+#define MAX_TEXT_BYTES (1 << 28)
 
 struct inc_frame {
     const char *display; /* as written in messages (arena)    */
@@ -636,6 +637,9 @@ static int parse_include(struct parser *p, struct dict *d, const struct token *t
     if (p->ninc >= MAX_INCLUDE_DEPTH)
         return perr(p, t->line, t->col, "#include nested deeper than %d "
                     "files", MAX_INCLUDE_DEPTH);
+    if (p->text_bytes > MAX_TEXT_BYTES) /* repeated includes, nested */
+        return perr(p, t->line, t->col, "#include: more than %d MB of text "
+                    "read in all", MAX_TEXT_BYTES >> 20);
     char *text;
     size_t len;
     int err = dict_slurp(path, &text, &len);
