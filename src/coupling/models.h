@@ -22,6 +22,24 @@
  *   step 10, correction u^{m+1} = u* - (dt/rho_f) c_i grad P
  *       A: c_i = 1              B: c_i = 1/eps_i
  * "visc" is the viscous term of the MPS solver, nu lap(u_d)/eps_i.
+ *
+ * Call sequence of one fluid step m -> m+1 (METHODS.md A.10, sequential):
+ *   mpsFluid  coupling_pairs_build(P, dim, radius*dp, ng, x_k, np, x_i)
+ *             coupling_porosity(P, V_k, eps_min, eps, inv_eps, &nclamp)
+ *             (Model A: coupling_gradient_consistent -> gradP_i)
+ *             coupling_interp_grains(P, fluid|wall mask, eps, u, gradP_i, G)
+ *             -> send eps_k, u_k (gradP_k), wet_k to demSolid
+ *   demSolid  N_sub times: drag->force_all(eps_k, d, V, u_k, v_k) -> F^d;
+ *             coupling_grain_force(model, F^d, ...) -> F^int (+ contacts);
+ *             coupling_drag_mean_add(M, F^d); integrate
+ *             -> send x_k(m+1), v_k, mean drag to mpsFluid
+ *   mpsFluid  coupling_pairs_build and coupling_porosity at the new x_k;
+ *             coupling_reaction_input(model, conservative, F_bar, eps_k)
+ *             coupling_reaction(P, mask, ..., dp^3, f_A)
+ *             coupling_mps_accel -> f_ext of the prediction;
+ *             coupling_ppe_source_factor, coupling_correction_factor.
+ * Guards: coupling_guard_grain_size once at start; coupling_guard_porosity
+ * and coupling_guard_relaxation at the solver's report interval.
  */
 #ifndef MPSDEM_COUPLING_MODELS_H
 #define MPSDEM_COUPLING_MODELS_H
