@@ -515,17 +515,17 @@ static void test_parse_errors(void **state)
 static void test_nesting_limit(void **state)
 {
     (void)state;
-    size_t n = 5000;
-    char *text = malloc(2 * n + 8);
-    memcpy(text, "a ", 2);
-    memset(text + 2, '(', n);
-    memset(text + 2 + n, ')', n);
-    memcpy(text + 2 + 2 * n, ";", 2);
+    enum { n = 5000 };
+    static char text[2 * n + 8] = "a ";
+    for (size_t i = 0; i < n; i++) {
+        text[2 + i] = '(';
+        text[2 + n + i] = ')';
+    }
+    text[2 + 2 * n] = ';';
     struct dict *d;
     assert_int_equal(dict_read_string(text, strlen(text), "t.dict", &d),
                      SIM_ERR_PARSE);
     msg_has("t.dict:1:", "nested deeper than");
-    free(text);
 }
 
 static void test_missing_file(void **state)
@@ -595,6 +595,8 @@ static void test_large_list(void **state)
     int n = 200000;
     size_t cap = (size_t)n * 32 + 64, len = 0;
     char *text = malloc(cap);
+    if (!text)
+        fail();
     len += (size_t)snprintf(text + len, cap - len, "probes\n(\n");
     for (int i = 0; i < n; i++)
         len += (size_t)snprintf(text + len, cap - len, "(%d %d.5 -%de-3)\n",
