@@ -129,6 +129,57 @@ static void test_momentum_identity(void **state)
     sim_error_clear();
 }
 
+/* Reaction and porosity per particle against eqs. (36) and (31) written
+ * as direct double loops over grains and particles (no pair list). */
+static void test_against_direct(void **state)
+{
+    (void)state;
+    enum { NG = 60, NP = 900 };
+    static double xg[3 * NG], xp[3 * NP], F[3 * NG], Vg[NG], fA[3 * NP];
+    static double eps[NP], W[NG];
+    const double re = 0.011, Vp = 2e-8;
+    for (int k = 0; k < NG; k++) {
+        Vg[k] = 1e-8 * (0.5 + urand());
+        for (int c = 0; c < 3; c++) {
+            xg[3 * k + c] = 0.03 * urand();
+            F[3 * k + c] = urand() - 0.5;
+        }
+    }
+    for (int i = 0; i < 3 * NP; i++)
+        xp[i] = 0.035 * urand() - 0.0025;
+    struct coupling_pairs P = { 0 };
+    assert_int_equal(coupling_pairs_build(&P, 3, re, NG, xg, NP, xp), 0);
+    assert_int_equal(coupling_reaction(&P, NULL, F, Vp, fA, NULL), 0);
+    assert_int_equal(coupling_porosity(&P, Vg, 1e-6, eps, NULL, NULL), 0);
+    for (int k = 0; k < NG; k++) {
+        W[k] = 0;
+        for (int i = 0; i < NP; i++)
+            W[k] += coupling_ws(sqrt(pow(xp[3 * i] - xg[3 * k], 2) +
+                                     pow(xp[3 * i + 1] - xg[3 * k + 1], 2) +
+                                     pow(xp[3 * i + 2] - xg[3 * k + 2], 2)),
+                                re);
+    }
+    for (int i = 0; i < NP; i++) {
+        double f[3] = { 0, 0, 0 }, s = 0, fmag = 0;
+        for (int k = 0; k < NG; k++) {
+            double w = coupling_ws(sqrt(pow(xp[3 * i] - xg[3 * k], 2) +
+                                        pow(xp[3 * i + 1] - xg[3 * k + 1], 2) +
+                                        pow(xp[3 * i + 2] - xg[3 * k + 2], 2)),
+                                   re);
+            s += w * Vg[k];
+            for (int c = 0; c < 3 && W[k] > 0; c++) {
+                f[c] += F[3 * k + c] * w / W[k] / Vp;
+                fmag += fabs(F[3 * k + c] * w / W[k] / Vp);
+            }
+        }
+        double e = fmax(1e-6, 1 - s / coupling_ns(3, re));
+        assert_true(fabs(eps[i] - e) <= 1e-13);
+        for (int c = 0; c < 3; c++)
+            assert_true(fabs(fA[3 * i + c] - f[c]) <= 1e-13 * fmag);
+    }
+    coupling_pairs_free(&P);
+}
+
 /* E1-13 "every step" in a small MSS loop: grains relax towards the frozen
  * fluid velocity over N_sub sub-steps (drag at every sub-step with the
  * current v, A.8), the mean drag goes back to the fluid, and the fluid
@@ -461,6 +512,7 @@ int main(void)
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_drag_mean),
         cmocka_unit_test(test_momentum_identity),
+        cmocka_unit_test(test_against_direct),
         cmocka_unit_test(test_mss_loop),
         cmocka_unit_test(test_grain_force),
         cmocka_unit_test(test_mps_terms),
