@@ -212,6 +212,32 @@ static void test_terminal_velocity(void **state)
     assert_true(fabs(cd / 0.450 - 1) < 0.01);
 }
 
+/* E1-15 algebra: hindered settling of a homogeneous suspension. The slip
+ * dU solves (rho_s - rho_f) V g = F^d(dU)/eps and the solids settle at
+ * v = eps dU; in the Stokes regime of the Wen-Yu branch this is
+ * Richardson-Zaki, v = v_Stokes eps^4.65. 20 um beads (Re < 0.01). */
+static void test_hindered_settling(void **state)
+{
+    (void)state;
+    const double d = 2e-5, V = volume(d);
+    const double vst = (RHO_S - water.rho) * G * d * d / (18 * water.mu);
+    for (double e = 0.85; e < 1.0; e += 0.05) {
+        double lo = 0, hi = 1;
+        for (int it = 0; it < 200; it++) {
+            double s = 0.5 * (lo + hi);
+            if (force(&drag_ergun_wen_yu, e, s, d) / e <
+                (RHO_S - water.rho) * V * G)
+                lo = s;
+            else
+                hi = s;
+        }
+        double v = e * 0.5 * (lo + hi), rz = vst * pow(e, 4.65);
+        print_message("E1-15 eps = %.2f: v/v_Stokes = %.5f, eps^4.65 = "
+                      "%.5f\n", e, v / vst, rz / vst);
+        assert_true(fabs(v / rz - 1) < 0.01);
+    }
+}
+
 static void test_select(void **state)
 {
     (void)state;
@@ -252,6 +278,7 @@ int main(void)
         cmocka_unit_test(test_zero_slip),
         cmocka_unit_test(test_array_entry),
         cmocka_unit_test(test_terminal_velocity),
+        cmocka_unit_test(test_hindered_settling),
         cmocka_unit_test(test_select),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
