@@ -91,7 +91,7 @@ struct channel {
     char *base;                 /* mapping of CHANNEL_RESERVE_BYTES        */
     struct chan_header *hdr;
     int side, peer;
-    int peer_pidfd;             /* -1 until the peer's pid is known        */
+    int peer_pidfd;             /* -1: pid unknown yet; -2: already gone   */
     pid_t peer_pid;
     char peer_program[64];
     uint64_t hung_ns;           /* heartbeat silence that means "hung"     */

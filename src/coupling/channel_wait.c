@@ -24,6 +24,8 @@
 #include <time.h>
 #include <unistd.h>
 
+#define PEER_GONE (-2) /* peer_pidfd when pidfd_open found no process */
+
 uint64_t chan_now_ns(void)
 {
     struct timespec ts;
@@ -72,8 +74,9 @@ int chan_watch_peer(struct channel *c)
     const struct chan_side *p = &c->hdr->side[c->peer];
     pid_t pid = atomic_load(&p->pid);
 
-    if (c->peer_pidfd >= 0 || pid <= 0)
+    if (c->peer_pidfd != -1 || pid <= 0)
         return SIM_OK;
+    /* the program name was written before the pid */
     c->peer_pid = pid;
     memcpy(c->peer_program, p->program, sizeof c->peer_program);
     c->peer_program[sizeof c->peer_program - 1] = '\0';
@@ -81,13 +84,16 @@ int chan_watch_peer(struct channel *c)
         strcpy(c->peer_program, c->peer == CHANNEL_FLUID ? "fluid program"
                                                           : "solid program");
     c->peer_pidfd = pidfd_open(pid, 0);
-    if (c->peer_pidfd < 0 && errno == ESRCH)
-        return sim_error(SIM_ERR_PEER, "%s: peer %s (pid %d) exited before "
-                         "the handshake ended", c->set.program,
-                         c->peer_program, (int)pid);
-    if (c->peer_pidfd < 0)
+    if (c->peer_pidfd >= 0)
+        return SIM_OK;
+    if (errno != ESRCH) {
+        c->peer_pidfd = -1;
         return sim_error(SIM_ERR_IO, "%s: pidfd_open(%d): %s",
                          c->set.program, (int)pid, strerror(errno));
+    }
+    /* gone already: what it published (a mismatch, a failure) may still
+     * explain why, so the verdict is left to the caller's next check */
+    c->peer_pidfd = PEER_GONE;
     return SIM_OK;
 }
 
@@ -132,6 +138,10 @@ int chan_check_peer(struct channel *c)
     TRY(chan_watch_peer(c));
     if (state == SIDE_CLOSED || state == SIDE_FAILED)
         return peer_left(c, state);
+    if (c->peer_pidfd == PEER_GONE)
+        return sim_error(SIM_ERR_PEER, "%s: peer %s (pid %d) exited before "
+                         "the handshake ended", c->set.program,
+                         c->peer_program, (int)c->peer_pid);
     if (c->peer_pidfd >= 0) {
         struct pollfd pfd = { .fd = c->peer_pidfd, .events = POLLIN };
         if (poll(&pfd, 1, 0) > 0)
