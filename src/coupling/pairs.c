@@ -52,6 +52,8 @@ static int reserve_pairs(struct coupling_pairs *P, size_t n)
     TRY(reserve((void **)&P->pk, &c, n, sizeof *P->pk));
     c = c0;
     TRY(reserve((void **)&P->pw, &c, n, sizeof *P->pw));
+    c = c0;
+    TRY(reserve((void **)&P->pmap, &c, n, sizeof *P->pmap));
     P->cap_pair = c;
     return SIM_OK;
 }
@@ -134,7 +136,7 @@ static int64_t grain_row_cells(const struct coupling_pairs *P, const double *xk,
                                const int lo[3], const int hi[3], int32_t *j,
                                double *w)
 {
-    const double re2 = P->re * P->re;
+    const double rs2 = P->rs * P->rs;
     int64_t m = 0, e0, e1;
     for (int cz = lo[2]; cz <= hi[2]; cz++)
         for (int cy = lo[1]; cy <= hi[1]; cy++) {
@@ -144,7 +146,7 @@ static int64_t grain_row_cells(const struct coupling_pairs *P, const double *xk,
                 double dx = x[0] - xk[0], dy = x[1] - xk[1];
                 double dz = P->dim == 3 ? x[2] - xk[2] : 0.0;
                 double r2 = dx * dx + dy * dy + dz * dz;
-                if (r2 < re2) {
+                if (r2 < rs2) {
                     j[m] = P->cidx[e];
                     w[m] = coupling_ws(sqrt(r2), P->re);
                     m++;
@@ -167,11 +169,11 @@ static int make_grid(struct coupling_pairs *P, int ng, const double *xg,
             lo[d] = fmin(lo[d], xg[3 * k + d]);
             hi[d] = fmax(hi[d], xg[3 * k + d]);
         }
-        lo[d] -= P->re;
-        hi[d] += P->re;
+        lo[d] -= P->rs;
+        hi[d] += P->rs;
     }
     double max_cells = fmax(1024.0, 4.0 * ((double)ng + np));
-    P->h = 0.5 * P->re;
+    P->h = 0.5 * P->rs;
     for (;;) {
         double n[3] = { 1, 1, 1 }, ncell = 1;
         for (int d = 0; d < P->dim; d++) {
@@ -188,7 +190,7 @@ static int make_grid(struct coupling_pairs *P, int ng, const double *xg,
     memcpy(P->lo, lo, sizeof lo);
     /* |floor(a) - floor(b)| <= ceil(|a - b|): reach cells hold every
      * particle within re of the grain. */
-    P->reach = (int)ceil(P->re / P->h - 1e-12);
+    P->reach = (int)ceil(P->rs / P->h - 1e-12);
     size_t ncell = (size_t)P->nc[0] * P->nc[1] * P->nc[2];
     TRY(reserve((void **)&P->cstart, &P->cap_cell, ncell + 1,
                 sizeof *P->cstart));
@@ -250,6 +252,7 @@ static void transpose(struct coupling_pairs *P)
             int64_t at = P->pstart[P->gj[e]]++;
             P->pk[at] = k;
             P->pw[at] = P->gw[e];
+            P->pmap[at] = e;
         }
     for (int i = P->np; i > 0; i--)
         P->pstart[i] = P->pstart[i - 1];
@@ -274,6 +277,8 @@ static int setup(struct coupling_pairs *P, int dim, double re, int ng,
     TRY(check_input(dim, re, ng, xg, np));
     P->dim = dim;
     P->re = re;
+    P->rs = re;
+    P->skin = -1.0;
     P->ng = ng;
     P->np = np;
     return reserve_points(P, ng, np);
@@ -386,14 +391,15 @@ static void gather_and_transpose(struct coupling_pairs *P, int T)
                 int32_t at = cur[P->gj[e]]++;
                 P->pk[at] = k;
                 P->pw[at] = P->gw[e];
+                P->pmap[at] = e;
             }
     }
 }
 
-int coupling_pairs_build(struct coupling_pairs *P, int dim, double re,
-                         int ng, const double *xg, int np, const double *xp)
+/* The cell search with radius P->rs (after setup). */
+static int search(struct coupling_pairs *P, int ng, const double *xg, int np,
+                  const double *xp)
 {
-    TRY(setup(P, dim, re, ng, xg, np));
     if (ng == 0) {
         P->gstart[0] = 0;
         P->npair = 0;
@@ -421,6 +427,88 @@ int coupling_pairs_build(struct coupling_pairs *P, int dim, double re,
     return SIM_OK;
 }
 
+int coupling_pairs_build(struct coupling_pairs *P, int dim, double re,
+                         int ng, const double *xg, int np, const double *xp)
+{
+    TRY(setup(P, dim, re, ng, xg, np));
+    return search(P, ng, xg, np, xp);
+}
+
+/* Largest displacement since the search of n points, squared; +inf when
+ * a position became non-finite (fmax would hide a NaN). */
+static double max_shift2(int dim, int n, const double *x, const double *x0)
+{
+    double m = 0;
+    int bad = 0;
+#pragma omp parallel for schedule(static) reduction(max : m) reduction(| : bad)
+    for (int i = 0; i < n; i++) {
+        double d2 = 0;
+        for (int d = 0; d < dim; d++)
+            d2 += (x[3 * (size_t)i + d] - x0[3 * (size_t)i + d]) *
+                  (x[3 * (size_t)i + d] - x0[3 * (size_t)i + d]);
+        bad |= !isfinite(d2);
+        if (d2 > m)
+            m = d2;
+    }
+    return bad ? INFINITY : m;
+}
+
+/* New weights of the kept candidates, computed exactly as the search
+ * computes them, then copied to the particle-major rows. */
+static void refresh(struct coupling_pairs *P, const double *xg,
+                    const double *xp)
+{
+#pragma omp parallel for schedule(dynamic, 16)
+    for (int k = 0; k < P->ng; k++) {
+        const double *xk = xg + 3 * (size_t)k;
+        for (int64_t e = P->gstart[k]; e < P->gstart[k + 1]; e++) {
+            const double *x = xp + 3 * (size_t)P->gj[e];
+            double dx = x[0] - xk[0], dy = x[1] - xk[1];
+            double dz = P->dim == 3 ? x[2] - xk[2] : 0.0;
+            P->gw[e] = coupling_ws(sqrt(dx * dx + dy * dy + dz * dz), P->re);
+        }
+    }
+#pragma omp parallel for schedule(static)
+    for (int64_t e = 0; e < P->npair; e++)
+        P->pw[e] = P->gw[P->pmap[e]];
+}
+
+int coupling_pairs_update(struct coupling_pairs *P, int dim, double re,
+                          double skin, int ng, const double *xg, int np,
+                          const double *xp, int *searched)
+{
+    if (!(skin >= 0) || !isfinite(skin))
+        return sim_error(SIM_ERR_INPUT, "coupling pairs: skin %g must be "
+                         ">= 0", skin);
+    if (P->skin == skin && P->dim == dim && P->re == re && P->ng == ng &&
+        P->np == np) {
+        TRY(check_input(dim, re, ng, xg, np));
+        double sg = sqrt(max_shift2(dim, ng, xg, P->xg0));
+        double sp = sqrt(max_shift2(dim, np, xp, P->xp0));
+        if (sg + sp < skin) {
+            refresh(P, xg, xp);
+            if (searched)
+                *searched = 0;
+            return SIM_OK;
+        }
+    }
+    TRY(setup(P, dim, re, ng, xg, np));
+    P->rs = re + skin;
+    TRY(search(P, ng, xg, np, xp));
+    TRY(reserve((void **)&P->xg0, &P->cap_g0, (size_t)ng + 1,
+                3 * sizeof *P->xg0));
+    TRY(reserve((void **)&P->xp0, &P->cap_p0, (size_t)np + 1,
+                3 * sizeof *P->xp0));
+    if (ng)
+        memcpy(P->xg0, xg, 3 * (size_t)ng * sizeof *xg);
+    if (np)
+        memcpy(P->xp0, xp, 3 * (size_t)np * sizeof *xp);
+    P->skin = skin;
+    if (searched)
+        *searched = 1;
+    return SIM_OK;
+}
+
 static int64_t grain_row_brute(const struct coupling_pairs *P,
                                const double *xk, const double *xp, int32_t *j,
                                double *w)
@@ -430,7 +518,7 @@ static int64_t grain_row_brute(const struct coupling_pairs *P,
         double r2 = 0;
         for (int d = 0; d < P->dim; d++)
             r2 += (xp[3 * i + d] - xk[d]) * (xp[3 * i + d] - xk[d]);
-        if (!(r2 < P->re * P->re))
+        if (!(r2 < P->rs * P->rs))
             continue;
         if (j) {
             j[m] = i;
@@ -470,6 +558,9 @@ void coupling_pairs_free(struct coupling_pairs *P)
     free(P->xs);
     free(P->pcell);
     free(P->gwork);
+    free(P->pmap);
+    free(P->xg0);
+    free(P->xp0);
     for (int t = 0; t < P->nthr; t++) {
         free(P->tbuf[t].j);
         free(P->tbuf[t].w);

@@ -15,7 +15,8 @@
  * each loop is then a race-free gather under OpenMP:
  *   grain-major     gstart[k]..gstart[k+1]: particle gj[], weight gw[]
  *   particle-major  pstart[i]..pstart[i+1]: grain pk[],    weight pw[]
- * Weights are w_s(r) of eq. (29); pairs with r >= r_e,s are not stored.
+ * Weights are w_s(r) of eq. (29); coupling_pairs_build() stores no pair
+ * with r >= r_e,s, coupling_pairs_update() may keep some with weight 0.
  * The particle-major rows list grains in ascending order, and the content
  * of the grain-major rows does not depend on the number of threads, so
  * every sum below is reproducible run to run (restart = continuous run).
@@ -43,6 +44,7 @@ struct coupling_pair_buf {
 struct coupling_pairs {
     int dim;              /* 2 or 3                                     */
     double re;            /* coupling radius r_e,s [m]                  */
+    double rs;            /* search radius: re, or re + skin (update)   */
     int ng, np;           /* grains and MPS particles of the last build */
     int64_t npair;
     int64_t *gstart;      /* ng+1                                       */
@@ -59,6 +61,11 @@ struct coupling_pairs {
     double *xs;           /* their positions in the same order (3 each) */
     int32_t *pcell;       /* cell of each particle, -1 outside the box  */
     double *gwork;        /* 3 ng scratch for per-grain sums (reaction) */
+    int64_t *pmap;        /* npair: grain-major entry of each particle-
+                           * major entry (weight refresh)               */
+    double *xg0, *xp0;    /* positions at the last search (update)      */
+    double skin;          /* skin of the last search; < 0: none kept    */
+    size_t cap_g0, cap_p0;
     size_t cap_g, cap_gw, cap_p, cap_pair, cap_cell;
     /* per-thread storage of the parallel build (one pass over the cells,
      * then a transpose by contiguous grain ranges) */
@@ -78,6 +85,21 @@ int coupling_pairs_build(struct coupling_pairs *P, int dim, double re,
 int coupling_pairs_build_brute(struct coupling_pairs *P, int dim, double re,
                                int ng, const double *xg, int np,
                                const double *xp);
+
+/*
+ * Verlet-skin variant for the solvers' time loop: the search keeps every
+ * pair within re + skin (weights are w_s(r; re), hence 0 beyond re) and
+ * later calls only refresh the weights of those candidates, as long as the
+ * largest grain displacement plus the largest particle displacement since
+ * the search stays below skin (then no pair can have entered the kernel
+ * radius). A change of ng, np, dim, re or skin forces a search.
+ * *searched (may be NULL) is set to 1 when a search ran, else 0.
+ * Sums over a refreshed list equal those over a fresh build to round-off
+ * (the order of the terms is that of the last search).
+ */
+int coupling_pairs_update(struct coupling_pairs *P, int dim, double re,
+                          double skin, int ng, const double *xg, int np,
+                          const double *xp, int *searched);
 
 void coupling_pairs_free(struct coupling_pairs *P);
 

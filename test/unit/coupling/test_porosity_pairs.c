@@ -171,12 +171,102 @@ static void test_threads(void **state)
     coupling_pairs_free(&B);
 }
 
+/* Non-zero entries of A equal to B's pairs (grain rows as sets, particle
+ * rows in order), weights bit for bit. */
+static void assert_same_nonzero(const struct coupling_pairs *A,
+                                const struct coupling_pairs *B)
+{
+    int64_t nz = 0;
+    for (int i = 0; i < A->np; i++) {
+        int64_t eb = B->pstart[i];
+        for (int64_t e = A->pstart[i]; e < A->pstart[i + 1]; e++) {
+            if (A->pw[e] == 0)
+                continue;
+            assert_true(eb < B->pstart[i + 1]);
+            assert_int_equal(A->pk[e], B->pk[eb]);
+            assert_memory_equal(&A->pw[e], &B->pw[eb], sizeof(double));
+            eb++;
+            nz++;
+        }
+        assert_true(eb == B->pstart[i + 1]);
+    }
+    assert_int_equal(nz, B->npair);
+    for (int k = 0; k < A->ng; k++) {
+        int64_t n = 0;
+        for (int64_t e = A->gstart[k]; e < A->gstart[k + 1]; e++)
+            n += A->gw[e] != 0;
+        assert_int_equal(n, B->gstart[k + 1] - B->gstart[k]);
+    }
+}
+
+/* The Verlet-skin update: refreshed lists carry exactly the pairs and
+ * weights of a fresh build (plus zero-weight candidates), the porosity is
+ * bit for bit the same, and a search runs when the displacements reach
+ * the skin or a particle goes non-finite. */
+static void test_update(void **state)
+{
+    (void)state;
+    enum { NG = 150, NP = 4000 };
+    static double xg[3 * NG], xp[3 * NP], V[NG], e1[NP], e2[NP];
+    const double re = 0.011, skin = 0.002;
+    for (int dim = 2; dim <= 3; dim++) {
+        memset(xg, 0, sizeof xg);
+        memset(xp, 0, sizeof xp);
+        for (int k = 0; k < NG; k++) {
+            V[k] = 1e-8;
+            for (int c = 0; c < dim; c++)
+                xg[3 * k + c] = 0.05 * urand();
+        }
+        for (int i = 0; i < NP; i++)
+            for (int c = 0; c < dim; c++)
+                xp[3 * i + c] = 0.06 * urand() - 0.005;
+        struct coupling_pairs U = { 0 }, B = { 0 };
+        int searches = 0, refreshes = 0, searched;
+        for (int step = 0; step < 14; step++) {
+            double amp = step == 9 ? 10 * skin : 0.15 * skin;
+            for (int c = 0; c < dim; c++) {
+                xg[3 * (step % NG) + c] += amp * (urand() - 0.5);
+                xp[3 * (step % NP) + c] += amp * (urand() - 0.5);
+                xp[3 * ((7 * step) % NP) + c] += amp * (urand() - 0.5);
+            }
+            if (step == 12)
+                xp[3 * 5] = NAN;
+            assert_int_equal(coupling_pairs_update(&U, dim, re, skin, NG, xg,
+                                                   NP, xp, &searched), 0);
+            searches += searched;
+            refreshes += !searched;
+            if (step == 0 || step == 9 || step == 12)
+                assert_int_equal(searched, 1);
+            assert_int_equal(coupling_pairs_build_brute(&B, dim, re, NG, xg,
+                                                        NP, xp), 0);
+            assert_same_nonzero(&U, &B);
+            assert_int_equal(coupling_porosity(&U, V, 0.3, e1, NULL, NULL),
+                             0);
+            assert_int_equal(coupling_porosity(&B, V, 0.3, e2, NULL, NULL),
+                             0);
+            assert_memory_equal(e1, e2, sizeof e1);
+        }
+        assert_true(refreshes >= 8 && searches >= 3);
+        /* a plain build after updates, then an update: searches again */
+        assert_int_equal(coupling_pairs_build(&U, dim, re, NG, xg, NP, xp),
+                         0);
+        assert_int_equal(coupling_pairs_update(&U, dim, re, skin, NG, xg, NP,
+                                               xp, &searched), 0);
+        assert_int_equal(searched, 1);
+        assert_int_equal(coupling_pairs_update(&U, dim, re, -1, NG, xg, NP,
+                                               xp, &searched), SIM_ERR_INPUT);
+        coupling_pairs_free(&U);
+        coupling_pairs_free(&B);
+    }
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_against_brute),
         cmocka_unit_test(test_bad_grain),
         cmocka_unit_test(test_threads),
+        cmocka_unit_test(test_update),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
