@@ -24,7 +24,8 @@
  * "visc" is the viscous term of the MPS solver, nu lap(u_d)/eps_i.
  *
  * Call sequence of one fluid step m -> m+1 (METHODS.md A.10, sequential):
- *   mpsFluid  coupling_pairs_build(P, dim, radius*dp, ng, x_k, np, x_i)
+ *   mpsFluid  coupling_pairs_update(P, dim, radius*dp, skin*dp, ng, x_k,
+ *                                   np, x_i, &searched)
  *             coupling_porosity(P, V_k, eps_min, eps, inv_eps, &nclamp)
  *             (Model A: coupling_gradient_consistent -> gradP_i)
  *             coupling_interp_grains(P, fluid|wall mask, eps, u, gradP_i, G)
@@ -33,7 +34,7 @@
  *             coupling_grain_force(model, F^d, ...) -> F^int (+ contacts);
  *             coupling_drag_mean_add(M, F^d); integrate
  *             -> send x_k(m+1), v_k, mean drag to mpsFluid
- *   mpsFluid  coupling_pairs_build and coupling_porosity at the new x_k;
+ *   mpsFluid  coupling_pairs_update and coupling_porosity at the new x_k;
  *             coupling_reaction_input(model, conservative, F_bar, eps_k)
  *             coupling_reaction(P, mask, ..., dp^3, f_A)
  *             coupling_mps_accel -> f_ext of the prediction;
@@ -59,6 +60,7 @@ struct coupling_settings {
     double radius;                  /* `kernelRadius` r_e,s / dp (4.1)    */
     double eps_min;                 /* `porosityMin` (0.3)                */
     int conservative;               /* `conservativeReaction` (no), B only */
+    double skin;                    /* `pairSkin` / dp (0): pairs.h update */
 };
 
 /* Read the entries above; errors cite couplingDict's file and line. */

@@ -416,10 +416,11 @@ static void test_settings(void **state)
     assert_int_equal(read_settings("coupled yes;\n", &s), 0);
     assert_int_equal(s.model, COUPLING_MODEL_B);
     assert_ptr_equal(s.drag, &drag_ergun_wen_yu);
-    assert_true(s.radius == 4.1 && s.eps_min == 0.3);
+    assert_true(s.radius == 4.1 && s.eps_min == 0.3 && s.skin == 0);
     assert_int_equal(read_settings("model A; dragModel gidaspowBlend;\n"
-                                   "kernelRadius 3.0; porosityMin 0.25;\n",
-                                   &s), 0);
+                                   "kernelRadius 3.0; porosityMin 0.25;\n"
+                                   "pairSkin 0.3;\n", &s), 0);
+    assert_true(s.skin == 0.3);
     assert_int_equal(s.model, COUPLING_MODEL_A);
     assert_ptr_equal(s.drag, &drag_gidaspow_blend);
     assert_true(s.radius == 3.0 && s.eps_min == 0.25);
@@ -432,6 +433,8 @@ static void test_settings(void **state)
     assert_non_null(strstr(sim_error_message(), "conservativeReaction"));
     assert_int_equal(read_settings("model C;\n", &s), SIM_ERR_DICT);
     assert_non_null(strstr(sim_error_message(), "system/couplingDict:1"));
+    assert_int_equal(read_settings("pairSkin -0.1;\n", &s), SIM_ERR_DICT);
+    assert_non_null(strstr(sim_error_message(), "pairSkin"));
     assert_int_equal(read_settings("kernelRadius -1;\n", &s), SIM_ERR_DICT);
     assert_non_null(strstr(sim_error_message(), "kernelRadius"));
     assert_int_equal(read_settings("\nporosityMin 1.5;\n", &s),
