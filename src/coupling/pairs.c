@@ -10,6 +10,11 @@
  * chunks whose per-particle cursors keep every particle row in ascending
  * grain order, so the result does not depend on the number of threads.
  *
+ * coupling_pairs_update() searches with r_e,s + skin and then, while the
+ * grains and particles have moved less than the skin in total, only
+ * recomputes the weights of the kept candidates (about 2.3x cheaper than
+ * a search on the dam-break layout, test/bench/couplingPhysicsBench).
+ *
  * Only the box around the grains is binned, so a dam break with a small
  * sediment patch pays for the particles near the patch. The cell count is
  * capped at a few times the number of points (the cells are then made
