@@ -26,7 +26,7 @@ void dem_free(struct dem *d)
     free(d->acc); free(d->alpha);
     free(d->walls);
     nlist_free(&d->nl);
-    free(d->hist); free(d->hnew); free(d->whist); free(d->whnew);
+    free(d->hist); free(d->whist);
     free(d->tbuf);
     free(d->cpl.fd); free(d->cpl.fd_sum);
     memset(d, 0, sizeof *d);
@@ -68,14 +68,12 @@ static int reserve_histories(struct dem *d)
     if (np > d->hist_cap) {
         size_t cap = np + np / 2;
         GROW(d->hist, 3 * cap);
-        GROW(d->hnew, 3 * cap);
         d->hist_cap = cap;
     }
     size_t nw = d->n * (size_t)d->nwalls;
     nw = nw > 0 ? nw : 1;
     if (nw > d->whist_cap) {
         GROW(d->whist, 3 * nw);
-        GROW(d->whnew, 3 * nw);
         d->whist_cap = nw;
     }
     return SIM_OK;
@@ -106,20 +104,8 @@ int dem_setup(struct dem *d)
     d->stats.rebuilds++;
     TRY(reserve_histories(d));
     memset(d->hist, 0, 3 * d->hist_cap * sizeof *d->hist);
-    memset(d->hnew, 0, 3 * d->hist_cap * sizeof *d->hnew);
     memset(d->whist, 0, 3 * d->whist_cap * sizeof *d->whist);
-    memset(d->whnew, 0, 3 * d->whist_cap * sizeof *d->whnew);
     return SIM_OK;
-}
-
-void dem_commit_history(struct dem *d)
-{
-    double *t = d->hist;
-    d->hist = d->hnew;
-    d->hnew = t;
-    t = d->whist;
-    d->whist = d->whnew;
-    d->whnew = t;
 }
 
 /* Rebuild with the histories following their pairs. `map` (old index ->

@@ -78,9 +78,9 @@ struct dem {
     double dom_lo[3], dom_hi[3];
     /* neighbours and contact history */
     struct dem_nlist nl;
-    double *hist, *hnew;          /* 3 per candidate pair                   */
+    double *hist;                 /* 3 per candidate pair                   */
     size_t hist_cap;
-    double *whist, *whnew;        /* 3 per grain and wall                   */
+    double *whist;                /* 3 per grain and wall                   */
     size_t whist_cap;
     double *tbuf;                 /* per-thread force/torque accumulation   */
     size_t tbuf_cap;
@@ -112,13 +112,13 @@ int dem_setup(struct dem *d);
 
 /* Force evaluation at state (x, v, w) at time t, tau = t - t_accepted for
  * the tangential springs. Writes accelerations acc (3n) and angular
- * accelerations alpha (3n); new histories into hnew/whnew; patch forces;
- * omega2_max. The neighbour list must be valid for x. */
+ * accelerations alpha (3n), patch forces and omega2_max. With commit set
+ * the state is accepted: the springs it implies replace the stored
+ * histories (in place); otherwise (a Runge-Kutta stage) they are left
+ * alone. The neighbour list must be valid for x. */
 int dem_forces(struct dem *d, double t, const double *x, const double *v,
-               const double *w, double tau, double *acc, double *alpha);
-
-/* Accept the histories of the last force evaluation (hnew -> hist). */
-void dem_commit_history(struct dem *d);
+               const double *w, double tau, int commit, double *acc,
+               double *alpha);
 
 /* Rebuild the neighbour list if x moved more than skin/2 since the last
  * build; histories follow their pairs. Returns SIM_OK. */

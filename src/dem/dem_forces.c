@@ -62,8 +62,8 @@ static int reserve_buffers(struct dem *d, int nth)
 
 /* Pair contacts of grain i into f/t (force, torque buffers of 3n). */
 static void pair_row(struct dem *d, size_t i, const double *x, const double *v,
-                     const double *w, double tau, double *f, double *t,
-                     long *nc, double *om2)
+                     const double *w, double tau, int commit, double *f,
+                     double *t, long *nc, double *om2)
 {
     for (size_t p = d->nl.start[i]; p < d->nl.start[i + 1]; p++) {
         size_t j = d->nl.j[p];
@@ -75,7 +75,9 @@ static void pair_row(struct dem *d, size_t i, const double *x, const double *v,
         }
         double rs = d->r[i] + d->r[j];
         if (d2 >= rs * rs) {
-            d->hnew[3 * p] = d->hnew[3 * p + 1] = d->hnew[3 * p + 2] = 0;
+            double *h = &d->hist[3 * p];
+            if (commit && (h[0] != 0 || h[1] != 0 || h[2] != 0))
+                h[0] = h[1] = h[2] = 0;   /* the contact ended */
             continue;
         }
         double dist = sqrt(d2);
@@ -87,7 +89,10 @@ static void pair_row(struct dem *d, size_t i, const double *x, const double *v,
         fill_kinematics(&g, &v[3 * i], &w[3 * i], d->r[i], &v[3 * j],
                         &w[3 * j], d->r[j]);
         struct contact_result res;
-        contact_eval(&d->law, &g, &d->hist[3 * p], tau, &d->hnew[3 * p], &res);
+        double hn[3];
+        contact_eval(&d->law, &g, &d->hist[3 * p], tau, hn, &res);
+        if (commit)
+            memcpy(&d->hist[3 * p], hn, sizeof hn);
         double tc[3];
         cross3(g.n, res.ft, tc);
         for (int a = 0; a < 3; a++) {
@@ -97,27 +102,34 @@ static void pair_row(struct dem *d, size_t i, const double *x, const double *v,
             t[3 * j + a] += d->r[j] * tc[a] - res.mroll[a];
         }
         (*nc)++;
-        *om2 = fmax(*om2, res.kn / g.mstar);
+        double w2 = res.kn / g.mstar;
+        *om2 = w2 > *om2 ? w2 : *om2;
     }
 }
 
 /* Wall contacts of grain i; pf: per-patch force received by the walls. */
 static void wall_row(struct dem *d, size_t i, const double *x, const double *v,
-                     const double *w, double tau, double *f, double *t,
-                     double *pf, long *nc, double *om2)
+                     const double *w, double tau, int commit, double *f,
+                     double *t, double *pf, long *nc, double *om2)
 {
     for (int wl = 0; wl < d->nwalls; wl++) {
         size_t hk = 3 * (i * (size_t)d->nwalls + (size_t)wl);
         struct contact_geom g;
-        if (!wall_contact(&d->walls[wl], &x[3 * i], d->r[i], g.n, &g.delta)) {
-            d->whnew[hk] = d->whnew[hk + 1] = d->whnew[hk + 2] = 0;
+        if (!wall_contact_inline(&d->walls[wl], &x[3 * i], d->r[i], g.n,
+                                 &g.delta)) {
+            double *h = &d->whist[hk];
+            if (commit && (h[0] != 0 || h[1] != 0 || h[2] != 0))
+                h[0] = h[1] = h[2] = 0;
             continue;
         }
         g.rstar = d->r[i];
         g.mstar = d->m[i];
         fill_kinematics(&g, &v[3 * i], &w[3 * i], d->r[i], NULL, NULL, 0);
         struct contact_result res;
-        contact_eval(&d->law, &g, &d->whist[hk], tau, &d->whnew[hk], &res);
+        double hn[3];
+        contact_eval(&d->law, &g, &d->whist[hk], tau, hn, &res);
+        if (commit)
+            memcpy(&d->whist[hk], hn, sizeof hn);
         double tc[3];
         cross3(g.n, res.ft, tc);
         int pa = d->walls[wl].patch;
@@ -127,7 +139,8 @@ static void wall_row(struct dem *d, size_t i, const double *x, const double *v,
             pf[3 * pa + a] -= res.f[a];
         }
         (*nc)++;
-        *om2 = fmax(*om2, res.kn / g.mstar);
+        double w2 = res.kn / g.mstar;
+        *om2 = w2 > *om2 ? w2 : *om2;
     }
 }
 
@@ -160,7 +173,8 @@ static int n_small(const struct dem *d)
 }
 
 int dem_forces(struct dem *d, double tm, const double *x, const double *v,
-               const double *w, double tau, double *acc, double *alpha)
+               const double *w, double tau, int commit, double *acc,
+               double *alpha)
 {
     (void)tm;
     /* Small systems run on one thread: a parallel region costs more than
@@ -181,14 +195,16 @@ int dem_forces(struct dem *d, double tm, const double *x, const double *v,
         team = omp_get_num_threads();
         #pragma omp for schedule(dynamic, 256) nowait
         for (size_t i = 0; i < n; i++) {
-            pair_row(d, i, x, v, w, tau, f, t, &nc, &om2);
-            wall_row(d, i, x, v, w, tau, f, t, pf, &nwc, &om2);
+            pair_row(d, i, x, v, w, tau, commit, f, t, &nc, &om2);
+            wall_row(d, i, x, v, w, tau, commit, f, t, pf, &nwc, &om2);
         }
         #pragma omp barrier
-        #pragma omp for schedule(static)
-        for (size_t k = 0; k < 6 * n; k++)
-            for (int th = 1; th < team; th++)
-                d->tbuf[k] += d->tbuf[(size_t)th * stride + k];
+        if (team > 1) {
+            #pragma omp for schedule(static)
+            for (size_t k = 0; k < 6 * n; k++)
+                for (int th = 1; th < team; th++)
+                    d->tbuf[k] += d->tbuf[(size_t)th * stride + k];
+        }
     }
     for (int p = 0; p < 3 * DEM_MAX_PATCHES; p++) {
         double s = 0;

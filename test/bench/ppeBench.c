@@ -8,8 +8,8 @@
  * solve wall time (minimum over --reps repetitions of step 1), time per
  * iteration per row, and for Jacobi/none-PCG the achieved memory bandwidth
  * against a STREAM triad measured in the same run. Bytes per PCG iteration
- * (STREAM counting, no write-allocate): 12 nnz + 8 n x 14 streams (rowptr;
- * SpMV p, q; update x r/w, r r/w, p, q, dinv; direction r, dinv, p r/w).
+ * (STREAM counting, no write-allocate): 12 nnz + 8 n x 13 streams (rowptr;
+ * SpMV p, q; residual r r/w, q, dinv; direction x r/w, p r/w, r, dinv).
  *
  *   ppeBench [--quick] [--cholmod] [--reps N] [--case DIM:NSIDE:RE ...]
  */
@@ -25,7 +25,7 @@
 #include "linsolve/linsolve.h"
 #include "linsolve/linsolve_impl.h"
 
-#define VEC_STREAMS 14
+#define VEC_STREAMS 13
 
 struct bcase { int dim, nside; double re; };
 

@@ -26,10 +26,12 @@ static double dot3(const double *a, const double *b)
 static void rotate_spring(const double *n, const double h[3], double s[3])
 {
     double hn = dot3(h, n);
-    double h2 = dot3(h, h);
     for (int a = 0; a < 3; a++)
         s[a] = h[a] - hn * n[a];
-    double s2 = dot3(s, s);
+    if (hn == 0)   /* already in the tangent plane (or zero): nothing to keep */
+        return;
+    double h2 = dot3(h, h);
+    double s2 = h2 - hn * hn;
     if (s2 > 0) {
         double scale = sqrt(h2 / s2);
         for (int a = 0; a < 3; a++)

@@ -58,7 +58,7 @@ static int rhs(realtype t, N_Vector y, N_Vector ydot, void *ud)
     size_t n3 = 3 * d->n;
     double *yy = N_VGetArrayPointer(y), *yd = N_VGetArrayPointer(ydot);
     memcpy(yd, yy + n3, n3 * sizeof *yd);
-    int rc = dem_forces(d, t, yy, yy + n3, yy + 2 * n3, t - a->t_acc,
+    int rc = dem_forces(d, t, yy, yy + n3, yy + 2 * n3, t - a->t_acc, 0,
                         yd + n3, yd + 2 * n3);
     if (d->cpl.drag)
         memcpy(yd + 3 * n3, d->cpl.fd, n3 * sizeof *yd);
@@ -111,11 +111,10 @@ static int post_step(realtype t, N_Vector y, void *ud)
     size_t n3 = 3 * d->n;
     double *yy = N_VGetArrayPointer(y), *s = N_VGetArrayPointer(a->scratch);
     double h = t - a->t_acc;
-    if (dem_forces(d, t, yy, yy + n3, yy + 2 * n3, h, s + n3, s + 2 * n3))
+    if (dem_forces(d, t, yy, yy + n3, yy + 2 * n3, h, 1, s + n3, s + 2 * n3))
         return -1;
     d->stats.fevals--;
     d->stats.hist_evals++;
-    dem_commit_history(d);
     a->t_acc = t;
     return dem_update_neighbours(d, yy) == SIM_OK ? 0 : -1;
 }
@@ -239,7 +238,7 @@ static int ark_advance(void *ctx, struct dem *d, double t_end)
      * function needs (and the forces, if the coupling changed them). */
     double *yy = N_VGetArrayPointer(a->y), *s = N_VGetArrayPointer(a->scratch);
     size_t n3 = 3 * d->n;
-    TRY(dem_forces(d, d->t, yy, yy + n3, yy + 2 * n3, d->t - a->t_acc,
+    TRY(dem_forces(d, d->t, yy, yy + n3, yy + 2 * n3, d->t - a->t_acc, 0,
                    s + n3, s + 2 * n3));
     for (size_t k = 0; k < n3; k++)
         d->cpl.fd_sum[k] -= yy[3 * n3 + k];

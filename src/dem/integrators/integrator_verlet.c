@@ -83,17 +83,15 @@ static int verlet_advance(void *ctx, struct dem *d, double t_end)
     double h = span / (double)(nsteps > 0 ? nsteps : 1);
     TRY(dem_update_neighbours(d, d->x));
     /* Forces at the start: the state or the coupling may have changed. */
-    TRY(dem_forces(d, d->t, d->x, d->v, d->w, 0.0, d->acc, d->alpha));
-    dem_commit_history(d);
+    TRY(dem_forces(d, d->t, d->x, d->v, d->w, 0.0, 1, d->acc, d->alpha));
     for (long s = 0; s < nsteps; s++) {
         double tn = s + 1 == nsteps ? t_end : d->t + h;
         half_kick(d, 0.5 * h);
         accumulate_drag(d, h, 0.0);
         drift(d, h);
         TRY(dem_update_neighbours(d, d->x));
-        TRY(dem_forces(d, tn, d->x, d->v, d->w, h, d->acc, d->alpha));
+        TRY(dem_forces(d, tn, d->x, d->v, d->w, h, 1, d->acc, d->alpha));
         half_kick(d, 0.5 * h);
-        dem_commit_history(d);
         accumulate_drag(d, h, h);
         d->t = tn;
         d->stats.steps++;

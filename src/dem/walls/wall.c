@@ -15,6 +15,17 @@ double wall_distance(const struct dem_wall *w, const double x[3])
 int wall_contact(const struct dem_wall *w, const double x[3], double r,
                  double n[3], double *delta)
 {
+    if (w->g.shape == GEOM_HALFSPACE && w->g.dim == 3 && !w->inside) {
+        /* the common case (floors, tank faces) without the general call */
+        const double *u = w->g.axis, *p = w->g.p;
+        double dist = (x[0] - p[0]) * u[0] + (x[1] - p[1]) * u[1]
+                      + (x[2] - p[2]) * u[2];
+        if (dist >= r)
+            return 0;
+        n[0] = -u[0], n[1] = -u[1], n[2] = -u[2];
+        *delta = r - dist;
+        return 1;
+    }
     double dist = wall_distance(w, x);
     if (dist >= r)
         return 0;

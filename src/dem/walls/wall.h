@@ -28,6 +28,24 @@ struct dem_wall {
 int wall_contact(const struct dem_wall *w, const double x[3], double r,
                  double n[3], double *delta);
 
+/* wall_contact with the common case (a 3-D half-space: floors, tank
+ * faces) inlined into the force loop. */
+static inline int wall_contact_inline(const struct dem_wall *w,
+                                      const double x[3], double r,
+                                      double n[3], double *delta)
+{
+    if (w->g.shape != GEOM_HALFSPACE || w->g.dim != 3 || w->inside)
+        return wall_contact(w, x, r, n, delta);
+    const double *u = w->g.axis, *p = w->g.p;
+    double dist = (x[0] - p[0]) * u[0] + (x[1] - p[1]) * u[1]
+                  + (x[2] - p[2]) * u[2];
+    if (dist >= r)
+        return 0;
+    n[0] = -u[0], n[1] = -u[1], n[2] = -u[2];
+    *delta = r - dist;
+    return 1;
+}
+
 /* Distance from x to the wall surface, positive on the grain side. */
 double wall_distance(const struct dem_wall *w, const double x[3]);
 

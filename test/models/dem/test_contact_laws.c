@@ -53,7 +53,7 @@ static void test_third_law_all_models(void **state)
                     memcpy(&d.w[3], w1, sizeof w1);
                     assert_int_equal(dem_setup(&d), SIM_OK);
                     d.hist[0] = 1e-6, d.hist[1] = -2e-6, d.hist[2] = 5e-7;
-                    assert_int_equal(dem_forces(&d, 0, d.x, d.v, d.w, 1e-6,
+                    assert_int_equal(dem_forces(&d, 0, d.x, d.v, d.w, 1e-6, 0,
                                                 d.acc, d.alpha), SIM_OK);
                     assert_int_equal(d.ncontacts, 1);
                     double fsum = 0, fmag = 0, lsum[3] = {0, 0, 0};

@@ -177,7 +177,7 @@ static void test_forces_vs_brute_force(void **state)
     d.omp_min = 0;   /* exercise the threaded path */
     int nth = omp_get_max_threads();
     omp_set_num_threads(nth > 1 ? 2 : 1);
-    assert_int_equal(dem_forces(&d, 0, d.x, d.v, d.w, tau, d.acc, d.alpha),
+    assert_int_equal(dem_forces(&d, 0, d.x, d.v, d.w, tau, 0, d.acc, d.alpha),
                      SIM_OK);
     double *f = calloc(6 * d.n, sizeof *f), *t = f + 3 * d.n;
     long contacts = 0;
