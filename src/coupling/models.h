@@ -39,6 +39,7 @@
  *             coupling_reaction(P, mask, ..., dp^3, f_A)
  *             coupling_mps_accel -> f_ext of the prediction;
  *             coupling_ppe_source_factor, coupling_correction_factor.
+ * (After renumbering particles or grains: coupling_pairs_invalidate.)
  * Guards: coupling_guard_grain_size once at start; coupling_guard_porosity
  * and coupling_guard_relaxation at the solver's report interval.
  */

@@ -550,6 +550,11 @@ int coupling_pairs_build_brute(struct coupling_pairs *P, int dim, double re,
     return SIM_OK;
 }
 
+void coupling_pairs_invalidate(struct coupling_pairs *P)
+{
+    P->skin = -1.0;
+}
+
 void coupling_pairs_free(struct coupling_pairs *P)
 {
     free(P->gstart);

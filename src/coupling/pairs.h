@@ -101,6 +101,9 @@ int coupling_pairs_update(struct coupling_pairs *P, int dim, double re,
                           double skin, int ng, const double *xg, int np,
                           const double *xp, int *searched);
 
+/* Make the next coupling_pairs_update() search. */
+void coupling_pairs_invalidate(struct coupling_pairs *P);
+
 void coupling_pairs_free(struct coupling_pairs *P);
 
 #endif

@@ -72,7 +72,7 @@ static void run(double dp, int R)
         coupling_pairs_build(&P, 3, re, NG, xg, np, xp);
         tb = best(tb, omp_get_wtime() - t);
         t = omp_get_wtime();
-        Q.skin = -1;   /* force a search with the skin */
+        coupling_pairs_invalidate(&Q);   /* a search with the skin */
         coupling_pairs_update(&Q, 3, re, skin, NG, xg, np, xp, &searched);
         ts = best(ts, omp_get_wtime() - t);
         t = omp_get_wtime();

@@ -253,6 +253,13 @@ static void test_update(void **state)
         assert_int_equal(coupling_pairs_update(&U, dim, re, skin, NG, xg, NP,
                                                xp, &searched), 0);
         assert_int_equal(searched, 1);
+        assert_int_equal(coupling_pairs_update(&U, dim, re, skin, NG, xg, NP,
+                                               xp, &searched), 0);
+        assert_int_equal(searched, 0);
+        coupling_pairs_invalidate(&U);
+        assert_int_equal(coupling_pairs_update(&U, dim, re, skin, NG, xg, NP,
+                                               xp, &searched), 0);
+        assert_int_equal(searched, 1);
         assert_int_equal(coupling_pairs_update(&U, dim, re, -1, NG, xg, NP,
                                                xp, &searched), SIM_ERR_INPUT);
         coupling_pairs_free(&U);
