@@ -439,19 +439,31 @@ int coupling_pairs_build(struct coupling_pairs *P, int dim, double re,
     return search(P, ng, xg, np, xp);
 }
 
+static int finite_point(int dim, const double *x)
+{
+    for (int d = 0; d < dim; d++)
+        if (!isfinite(x[d]))
+            return 0;
+    return 1;
+}
+
 /* Largest displacement since the search of n points, squared; +inf when
- * a position became non-finite (fmax would hide a NaN). */
+ * a point became non-finite or finite again (fmax would hide a NaN). A
+ * point non-finite at both times had and has no pairs: no change. */
 static double max_shift2(int dim, int n, const double *x, const double *x0)
 {
     double m = 0;
     int bad = 0;
 #pragma omp parallel for schedule(static) reduction(max : m) reduction(| : bad)
     for (int i = 0; i < n; i++) {
+        const double *a = x + 3 * (size_t)i, *b = x0 + 3 * (size_t)i;
         double d2 = 0;
         for (int d = 0; d < dim; d++)
-            d2 += (x[3 * (size_t)i + d] - x0[3 * (size_t)i + d]) *
-                  (x[3 * (size_t)i + d] - x0[3 * (size_t)i + d]);
-        bad |= !isfinite(d2);
+            d2 += (a[d] - b[d]) * (a[d] - b[d]);
+        if (!isfinite(d2)) {
+            bad |= finite_point(dim, a) || finite_point(dim, b);
+            continue;
+        }
         if (d2 > m)
             m = d2;
     }

@@ -237,6 +237,8 @@ static void test_update(void **state)
             refreshes += !searched;
             if (step == 0 || step == 9 || step == 12)
                 assert_int_equal(searched, 1);
+            if (step == 13)   /* still non-finite: no change */
+                assert_int_equal(searched, 0);
             assert_int_equal(coupling_pairs_build_brute(&B, dim, re, NG, xg,
                                                         NP, xp), 0);
             assert_same_nonzero(&U, &B);
