@@ -4,7 +4,8 @@
  *
  * The MPS neighbour list holds particle-particle pairs only, so the
  * coupling keeps its own list, built by binning the MPS particles into
- * cells of size r_e,s/2 over the box of the grains (expanded by r_e,s),
+ * cells of size r_e,s/2 over the box of the grains (expanded by r_e,s;
+ * r_e,s + skin in coupling_pairs_update),
  * with a copy of their positions in cell order so that the candidates of
  * a grain are read as 25 contiguous runs (a 5x5x5-cell stencil covers
  * 2.5^3 = 15.6 r_e,s^3 against 27 r_e,s^3 for cells of r_e,s): work is
@@ -19,15 +20,16 @@
  * with r >= r_e,s, coupling_pairs_update() may keep some with weight 0.
  * The particle-major rows list grains in ascending order, and the content
  * of the grain-major rows does not depend on the number of threads, so
- * every sum below is reproducible run to run (restart = continuous run).
+ * every sum below is reproducible run to run (a restart reproduces a
+ * continuous run bit for bit when every step searches, i.e. skin 0).
  *
  * Positions are interleaved x[3*i] (z = 0 in 2-D). A particle with a
  * non-finite position has no pairs; a grain with one is an error (the DEM
  * side blew up and should say so).
  *
- * Memory: the struct owns every array. coupling_pairs_build() grows them
- * when a build needs more room and otherwise allocates nothing, so after
- * the first steps a run does no allocation here.
+ * Memory: the struct owns every array. A search grows them when it needs
+ * more room and otherwise allocates nothing, so after the first steps a
+ * run does no allocation here.
  */
 #ifndef MPSDEM_COUPLING_PAIRS_H
 #define MPSDEM_COUPLING_PAIRS_H
