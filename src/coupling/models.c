@@ -189,7 +189,8 @@ int coupling_guard_relaxation(const struct drag_ops *drag,
             s2 += (u_k[3 * k + c] - v_k[3 * k + c]) *
                   (u_k[3 * k + c] - v_k[3 * k + c]);
         double K = drag->coeff(f, eps_k[k], sqrt(s2), d[k]);
-        double tau = K > 0 ? rho_s / K : INFINITY;
+        /* Model B's grains feel F^d/eps: the shorter of the two times */
+        double tau = K > 0 ? rho_s * eps_k[k] / K : INFINITY;
         tmin = fmin(tmin, tau);
         n += tau < dt;
     }

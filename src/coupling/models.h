@@ -106,7 +106,8 @@ int coupling_guard_grain_size(int ng, const double *d, double re_s);
  * clamped (n_clamped from coupling_porosity) out of np: a warning naming
  * the floor. Returns n_clamped. */
 long coupling_guard_porosity(long n_clamped, int np, double eps_min);
-/* Drag relaxation time tau = rho_s / K shorter than the fluid step dt for
+/* Drag relaxation time tau = rho_s eps_k / K (Model B's, the shorter;
+ * Model A's is rho_s / K) shorter than the fluid step dt for
  * grains at porosity eps_k and slip |u_k - v_k| (an explicit exchange over
  * dt would overshoot; sub-stepping the drag on the DEM side is then
  * essential). Returns the count; *tau_min the shortest time [s]. */
