@@ -103,6 +103,34 @@ void mps_gradient(const struct neighbour_list *nl, const double *w, int dim,
     }
 }
 
+void mps_gradient_pmin(const struct neighbour_list *nl, const double *w,
+                       int dim, double n0, const double *x, const double *phi,
+                       const double *inv_eps, const uint8_t *rows, double *out)
+{
+    const double c = dim / n0;
+#pragma omp parallel for schedule(static)
+    for (int i = 0; i < nl->n; i++) {
+        if (rows && !rows[i])
+            continue;
+        double g[3] = { 0, 0, 0 }, pmin = phi[i];
+        const double *xi = x + 3 * i;
+        for (int64_t k = nl->start[i]; k < nl->start[i + 1]; k++)
+            if (w[k] > 0)
+                pmin = fmin(pmin, phi[nl->j[k]]);
+        for (int64_t k = nl->start[i]; k < nl->start[i + 1]; k++) {
+            int j = nl->j[k];
+            double r = nl->r[k];
+            if (w[k] == 0 || r == 0)
+                continue;
+            double f = (phi[j] - pmin) * w[k] * IEPS(j) / (r * r);
+            for (int q = 0; q < 3; q++)
+                g[q] += f * (x[3 * j + q] - xi[q]);
+        }
+        for (int q = 0; q < 3; q++)
+            out[3 * i + q] = c * g[q];
+    }
+}
+
 void mps_divergence(const struct neighbour_list *nl, const double *w, int dim,
                     double n0, const double *x, const double *u,
                     const double *inv_eps, const uint8_t *rows, double *out)

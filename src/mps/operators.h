@@ -51,6 +51,16 @@ void mps_gradient(const struct neighbour_list *nl, const double *w, int dim,
                   double n0, const double *x, const double *phi,
                   const double *inv_eps, const uint8_t *rows, double *out);
 
+/* Koshizuka and Oka (1996) eq. (11): the stable first-order form
+ * grad phi_i = (d/n0) sum_j (phi_j - phi_min,i) r_ij w_ij / (|r_ij|^2 eps_j),
+ * phi_min,i the smallest phi among i and its neighbours within the radius:
+ * every pair term is repulsive, so particles cannot cluster (tensile
+ * instability), at the price of momentum conservation. */
+void mps_gradient_pmin(const struct neighbour_list *nl, const double *w,
+                       int dim, double n0, const double *x, const double *phi,
+                       const double *inv_eps, const uint8_t *rows,
+                       double *out);
+
 /* div u_i = (d/n0) sum_j (u_j - u_i).r_ij w_ij / (|r_ij|^2 eps_j)  (eq. 9). */
 void mps_divergence(const struct neighbour_list *nl, const double *w, int dim,
                     double n0, const double *x, const double *u,

@@ -1,0 +1,67 @@
+/*
+ * freesurface.c — free-surface detection (Xie et al. 2025 eqs. 14-16;
+ * METHODS.md A.5 with the adopted A0-06/A0-07):
+ *
+ *   (14) <n>_i < beta n0                      beta  = 0.8
+ *   (15) <F>_i = (d/n0) sum_j r_ij/|r_ij| w_ij / eps_j
+ *   (16) |<F>_i| > alpha |F0|                 alpha = 0.9
+ *
+ * A fluid particle is on the surface if (14) holds, or if (16) holds and
+ * <n>_i < fs_n_max n0 (0.97). |F0| is |F| of a particle on a flat surface of
+ * the initial lattice (A0-06: the seed's "internal particle" would be 0).
+ * Wall particles are never free surface; a wall particle with no fluid
+ * neighbour within the number-density radius is "dry" and gets p = 0 too,
+ * so that the PPE does not carry the whole dry tank wall (whose rows would
+ * only be tied to the fluid through a long chain of wall particles). So
+ * does a wall particle whose number density satisfies (14) (Koshizuka and
+ * Oka 1996 apply the surface test to wall particles): one beside the
+ * free surface would otherwise get a large negative pressure from the
+ * density term of (12) and pull the fluid into the corner.
+ * Both use the number-density radius.
+ */
+#include <math.h>
+
+#include "mps/mps.h"
+
+void mps_free_surface(struct mps_solver *s)
+{
+    struct mps_particles *P = &s->P;
+    const struct neighbour_list *nl = &s->nl;
+    const struct mps_settings *S = &s->S;
+    const double n0 = s->Ln.n0, f0 = s->Ln.f0, c = P->dim / n0;
+    const double *w = s->w_n, *ie = P->inv_eps;
+#pragma omp parallel for schedule(static)
+    for (int i = 0; i < P->n; i++) {
+        uint8_t flag = MPS_INNER;
+        double nd = P->nd[i];
+        if (P->type[i] == MPS_FLUID) {
+            if (nd < S->beta) {
+                flag = MPS_SURFACE;
+            } else if (nd < S->fs_n_max) {
+                double F[3] = { 0, 0, 0 };
+                const double *xi = P->x + 3 * i;
+                for (int64_t k = nl->start[i]; k < nl->start[i + 1]; k++) {
+                    int j = nl->j[k];
+                    double r = nl->r[k];
+                    if (w[k] == 0 || r == 0)
+                        continue;
+                    double f = w[k] * (ie ? ie[j] : 1.0) / r;
+                    for (int q = 0; q < 3; q++)
+                        F[q] += f * (P->x[3 * j + q] - xi[q]);
+                }
+                double mag = c * sqrt(F[0] * F[0] + F[1] * F[1] + F[2] * F[2]);
+                if (mag > S->alpha * f0)
+                    flag = MPS_SURFACE;
+            }
+        } else if (P->type[i] == MPS_WALL) {
+            flag = MPS_DRY_WALL;
+            for (int64_t k = nl->start[i]; k < nl->start[i + 1] && nd >= S->beta;
+                 k++)
+                if (w[k] > 0 && P->type[nl->j[k]] == MPS_FLUID) {
+                    flag = MPS_INNER;
+                    break;
+                }
+        }
+        P->fs[i] = flag;
+    }
+}

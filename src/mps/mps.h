@@ -1,0 +1,153 @@
+/*
+ * mps.h — the incompressible MPS fluid solver (Xie et al. 2025, METHODS.md
+ * A.2-A.5, A.9, A.10 with eps = 1): particle storage, settings, and one
+ * time step as a fixed sequence of phases.
+ *
+ *   mps_solver_init   lattice constants (n0, lambda, |F0|), the cell box,
+ *                     wall/dummy book-keeping, work storage
+ *   mps_step          neighbours -> prediction -> number density and free
+ *                     surface -> PPE -> correction -> position update
+ *   mps_propose_dt    Courant and viscous limits (A.8 eq. 37)
+ *   mps_check_setup   settings that cannot run stably, refused before the
+ *                     first step
+ *
+ * Particles (structure of arrays; vectors interleaved x y z, z = 0 in 2-D):
+ * type 0 fluid, 1 wall (in the PPE, never moves), 2 dummy (number density
+ * and neighbour sums only; pressure copied from the nearest wall particle,
+ * METHODS.md A.9). Particles are renumbered in cell order every
+ * `renumberInterval` steps; `id` follows each particle.
+ *
+ * Coupling hooks (later issue): `inv_eps` (1/eps per particle) and
+ * `f_ext` (force per unit mass added in the prediction, e.g. -f_A/rho) are
+ * NULL for a single-phase case and are then neither read nor allocated.
+ * Every operator already takes inv_eps.
+ */
+#ifndef MPSDEM_MPS_MPS_H
+#define MPSDEM_MPS_MPS_H
+
+#include <stdint.h>
+
+#include "linsolve/linsolve.h"
+#include "mps/operators.h"
+#include "particles/cells.h"
+#include "particles/neighbour.h"
+
+struct mps_kernel_ops;
+struct mps_stabiliser_ops;
+
+enum { MPS_FLUID = 0, MPS_WALL = 1, MPS_DUMMY = 2 };
+
+/* Free-surface flag values (field "freeSurface"). */
+enum { MPS_INNER = 0, MPS_SURFACE = 1, MPS_DRY_WALL = 2 };
+
+struct mps_particles {
+    int n, cap, dim;
+    double *x;        /* 3n positions [m]                                */
+    double *u;        /* 3n velocities [m/s]                             */
+    double *p;        /* n pressure [Pa]                                 */
+    double *normal;   /* 3n wall/dummy normal, fluid -> solid            */
+    int32_t *type;    /* MPS_FLUID | MPS_WALL | MPS_DUMMY                */
+    int32_t *patch;   /* -1 fluid, else wall patch index                 */
+    int64_t *id;      /* persistent particle id                          */
+    int32_t *partner; /* dummy: index of its wall particle; else -1      */
+    double *nd;       /* number density / n0 (number-density radius)     */
+    uint8_t *fs;      /* MPS_INNER | MPS_SURFACE | MPS_DRY_WALL          */
+    double *inv_eps;  /* NULL (single phase) or n values of 1/eps        */
+    double *f_ext;    /* NULL or 3n extra acceleration [m/s^2]           */
+};
+
+struct mps_settings {
+    /* constant/transportProperties, constant/g */
+    double rho, nu, g[3];
+    /* system/mpsSchemes */
+    const struct mps_kernel_ops *kernel;
+    double re_n, re_grad, re_lap;   /* radii in units of dp             */
+    double gamma;                   /* PPE source mix (eq. 12)          */
+    int gradient_pmin;              /* 0: eq. (8); 1: Koshizuka p_min   */
+    double beta, alpha, fs_n_max;   /* eqs. 14, 16 and A0-07 (0.97)     */
+    const struct mps_stabiliser_ops *collision; /* "none" by default    */
+    double collision_ratio, collision_restitution;
+    const struct mps_stabiliser_ops *shifting;  /* "none" by default    */
+    double shifting_coeff;
+    int dummy_pressure_zero;        /* 0: nearest wall (A.9 default)    */
+    int renumber_interval;          /* steps                            */
+    /* system/mpsSolution */
+    double max_escape_fraction;     /* stop when more have escaped      */
+};
+
+/* Wall-clock seconds per phase (accumulated) and the last PPE numbers. */
+struct mps_timers {
+    double neighbours, explicit_, assembly, ppe, correction;
+    long steps;
+    long ppe_iters;
+};
+
+struct mps_solver {
+    struct mps_particles P;
+    struct mps_settings S;
+    double dp;
+    struct mps_lattice Ln, Lg, Ll;  /* per operator radius               */
+    double re_max;
+    double box_lo[3], box_hi[3];    /* particles leaving it are removed  */
+    long n_escaped;                 /* removed so far                    */
+    int n_fluid0;                   /* fluid particles at start          */
+    long step;
+    /* per-step work (capacity cap) */
+    struct cell_grid grid;
+    struct neighbour_list nl;
+    double *w_n, *w_g, *w_l;        /* weights aligned with nl           */
+    size_t cap_w;
+    double *ustar, *grad, *lap, *div;
+    uint8_t *rows_fluid, *rows_ppe;
+    void *scratch;
+    int32_t *perm, *inv;
+    /* PPE */
+    struct csr_matrix A;
+    size_t cap_nnz;
+    int32_t *unk;                   /* particle -> unknown index or -1   */
+    double *b, *sol;
+    struct linsolve *ls;            /* owned                             */
+    struct linsolve_stats last;
+    struct mps_timers t;
+};
+
+/* Take ownership of the particles in P (arrays allocated with capacity
+ * P->cap), the settings, spacing dp [m] and a created linear solver.
+ * Computes the lattice constants and the box. */
+int mps_solver_init(struct mps_solver *s, struct mps_particles *P,
+                    const struct mps_settings *S, double dp,
+                    struct linsolve *ls);
+void mps_solver_free(struct mps_solver *s);
+
+/* Allocate particle arrays for n particles (zeroed; partner = -1). */
+int mps_particles_alloc(struct mps_particles *P, int n, int dim);
+void mps_particles_free(struct mps_particles *P);
+
+/* Settings with the documented defaults (Zhang kernel, 2.1/2.1/3.1... see
+ * mps_settings.c). */
+void mps_settings_default(struct mps_settings *S);
+
+/* One step of size dt [s]. Errors: SIM_ERR_SOLVER (PPE not converged),
+ * SIM_ERR_NUMERIC (NaN: message names step, particle id and field),
+ * SIM_ERR_INPUT (too many particles escaped). */
+int mps_step(struct mps_solver *s, double dt);
+
+/* Largest stable dt: min(maxCo dp/|u|max, 0.2 dp^2/nu); |u|max includes
+ * sqrt(2 g H) of the fluid column when u = 0 (first step). */
+double mps_propose_dt(const struct mps_solver *s, double max_co);
+
+/* Pre-run checks; the message says what to change. co_limit: maxCo. */
+int mps_check_setup(const struct mps_solver *s, double dt, int adjustable,
+                    double max_co);
+
+/* Sum of p dp^(d-1) n over the wall particles of each patch: force[3*k]
+ * for patch k < npatch [N, or N/m in 2-D]. */
+void mps_wall_forces(const struct mps_solver *s, int npatch, double *force);
+
+/* Scan u, p, x for non-finite values; SIM_ERR_NUMERIC naming them. */
+int mps_check_finite(const struct mps_solver *s);
+
+/* Free-surface flags (eqs. 14-16, A0-06/07) from nd; exposed for tests. */
+void mps_free_surface(struct mps_solver *s);
+
+#endif

@@ -1,0 +1,24 @@
+/* mps_impl.h — functions shared between the files of src/mps, not part of
+ * the public interface. */
+#ifndef MPSDEM_MPS_MPS_IMPL_H
+#define MPSDEM_MPS_MPS_IMPL_H
+
+#include "mps/mps.h"
+
+void mps_particles_permute(struct mps_solver *s, const int32_t *perm, int n);
+int mps_particles_drop_outside(struct mps_solver *s);
+
+/* Neighbours (with removal of escaped particles and renumbering) and the
+ * weights of each operator radius. */
+int mps_neighbours(struct mps_solver *s);
+
+/* Assemble and solve the PPE; fills P->p (0 at Dirichlet particles). */
+int mps_ppe_solve(struct mps_solver *s, double dt);
+
+/* Dummy pressure from the partner wall particle (or 0). */
+void mps_dummy_pressure(struct mps_solver *s);
+
+/* Nearest wall particle of every dummy (walls never move). */
+int mps_find_partners(struct mps_solver *s);
+
+#endif

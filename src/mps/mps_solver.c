@@ -1,0 +1,202 @@
+/* mps_solver.c — creation of the solver state (lattice constants per
+ * operator radius, the box, work storage, wall/dummy partners) and the
+ * neighbour phase of a step. */
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "core/error.h"
+#include "core/log.h"
+#include "mps/kernel/kernel.h"
+#include "mps/mps.h"
+#include "mps/mps_impl.h"
+#include "mps/stabiliser/stabiliser.h"
+
+void mps_settings_default(struct mps_settings *S)
+{
+    memset(S, 0, sizeof *S);
+    S->rho = 1000;
+    S->nu = 1e-6;
+    S->g[2] = -9.81;
+    S->kernel = &mps_kernel_zhang2014;
+    S->re_n = 2.1;
+    S->re_grad = 2.1;
+    S->re_lap = 3.1;
+    S->gamma = 0.01;
+    S->beta = 0.8;
+    S->alpha = 0.9;
+    S->fs_n_max = 0.97;
+    S->collision = &mps_stabiliser_none;
+    S->shifting = &mps_stabiliser_none;
+    S->collision_ratio = 0.5;
+    S->collision_restitution = 0.2;
+    S->shifting_coeff = 0.01;
+    S->renumber_interval = 1;
+    S->max_escape_fraction = 0.05;
+}
+
+/* Box = bounding box of the start state, widened so that splash has room;
+ * the vertical axis gets as much room again above. */
+static void set_box(struct mps_solver *s)
+{
+    const struct mps_particles *P = &s->P;
+    int d = P->dim;
+    for (int k = 0; k < 3; k++) {
+        s->box_lo[k] = INFINITY;
+        s->box_hi[k] = -INFINITY;
+    }
+    for (int i = 0; i < P->n; i++)
+        for (int k = 0; k < d; k++) {
+            s->box_lo[k] = fmin(s->box_lo[k], P->x[3 * i + k]);
+            s->box_hi[k] = fmax(s->box_hi[k], P->x[3 * i + k]);
+        }
+    for (int k = 0; k < 3; k++) {
+        if (k >= d) {
+            s->box_lo[k] = s->box_hi[k] = 0;
+            continue;
+        }
+        double ext = s->box_hi[k] - s->box_lo[k];
+        double m = fmax(4 * s->re_max, 0.25 * ext);
+        s->box_lo[k] -= m;
+        s->box_hi[k] += m + (k == d - 1 ? ext : 0);
+    }
+}
+
+static int alloc_work(struct mps_solver *s)
+{
+    size_t c = (size_t)s->P.cap;
+    s->ustar = sim_calloc(3 * c, sizeof(double));
+    s->grad = sim_calloc(3 * c, sizeof(double));
+    s->lap = sim_calloc(3 * c, sizeof(double));
+    s->div = sim_calloc(c, sizeof(double));
+    s->rows_fluid = sim_calloc(c, 1);
+    s->rows_ppe = sim_calloc(c, 1);
+    s->scratch = sim_calloc(3 * c, sizeof(double));
+    s->perm = sim_calloc(c, sizeof(int32_t));
+    s->inv = sim_calloc(c, sizeof(int32_t));
+    s->unk = sim_calloc(c, sizeof(int32_t));
+    s->b = sim_calloc(c, sizeof(double));
+    s->sol = sim_calloc(c, sizeof(double));
+    s->A.rowptr = sim_calloc(c + 1, sizeof(int64_t));
+    if (!s->ustar || !s->grad || !s->lap || !s->div || !s->rows_fluid
+        || !s->rows_ppe || !s->scratch || !s->perm || !s->inv || !s->unk
+        || !s->b || !s->sol || !s->A.rowptr)
+        return SIM_ERR_NOMEM;
+    return SIM_OK;
+}
+
+int mps_solver_init(struct mps_solver *s, struct mps_particles *P,
+                    const struct mps_settings *S, double dp,
+                    struct linsolve *ls)
+{
+    memset(s, 0, sizeof *s);
+    s->P = *P;
+    memset(P, 0, sizeof *P);
+    s->S = *S;
+    s->dp = dp;
+    s->ls = ls;
+    int d = s->P.dim;
+    const struct mps_kernel_ops *K = S->kernel;
+    TRY(mps_lattice_constants(K, d, dp, S->re_n * dp, &s->Ln));
+    TRY(mps_lattice_constants(K, d, dp, S->re_grad * dp, &s->Lg));
+    TRY(mps_lattice_constants(K, d, dp, S->re_lap * dp, &s->Ll));
+    s->re_max = dp * fmax(S->re_n, fmax(S->re_grad, S->re_lap));
+    log_info("MPS lattice (%d-D, dp = %g m, kernel %s):", d, dp, K->name);
+    log_info("    number density r_e = %g dp: n0 = %.6f, %d neighbours, "
+             "|F0| = %.4f", S->re_n, s->Ln.n0, s->Ln.nnb, s->Ln.f0);
+    log_info("    gradient       r_e = %g dp: n0 = %.6f", S->re_grad, s->Lg.n0);
+    log_info("    Laplacian      r_e = %g dp: n0 = %.6f, lambda = %.6f dp^2",
+             S->re_lap, s->Ll.n0, s->Ll.lambda / (dp * dp));
+    for (int i = 0; i < s->P.n; i++)
+        s->n_fluid0 += s->P.type[i] == MPS_FLUID;
+    set_box(s);
+    TRY(alloc_work(s));
+    TRY(mps_neighbours(s));
+    TRY(mps_find_partners(s));
+    return SIM_OK;
+}
+
+void mps_solver_free(struct mps_solver *s)
+{
+    mps_particles_free(&s->P);
+    cells_free(&s->grid);
+    neighbour_free(&s->nl);
+    free(s->w_n);
+    if (s->w_g != s->w_n)
+        free(s->w_g);
+    if (s->w_l != s->w_n && s->w_l != s->w_g)
+        free(s->w_l);
+    free(s->ustar); free(s->grad); free(s->lap); free(s->div);
+    free(s->rows_fluid); free(s->rows_ppe); free(s->scratch);
+    free(s->perm); free(s->inv); free(s->unk); free(s->b); free(s->sol);
+    free(s->A.rowptr); free(s->A.col); free(s->A.val);
+    linsolve_free(s->ls);
+    memset(s, 0, sizeof *s);
+}
+
+static int grow_weights(struct mps_solver *s)
+{
+    size_t want = (size_t)s->nl.nnz + 1;
+    if (want <= s->cap_w)
+        return SIM_OK;
+    size_t c = want + want / 4;
+    const struct mps_settings *S = &s->S;
+    int share_g = S->re_grad == S->re_n;
+    int share_l = S->re_lap == S->re_n ? 1 : S->re_lap == S->re_grad ? 2 : 0;
+    double *wn = sim_realloc(s->w_n, c * sizeof *wn);
+    if (!wn)
+        return SIM_ERR_NOMEM;
+    double *wg = share_g ? wn : sim_realloc(s->w_g == s->w_n ? NULL : s->w_g,
+                                            c * sizeof *wg);
+    if (!wg)
+        return SIM_ERR_NOMEM;
+    double *wl = share_l == 1 ? wn : share_l == 2 ? wg
+               : sim_realloc(s->w_l == s->w_n || s->w_l == s->w_g ? NULL
+                             : s->w_l, c * sizeof *wl);
+    if (!wl)
+        return SIM_ERR_NOMEM;
+    s->w_n = wn;
+    s->w_g = wg;
+    s->w_l = wl;
+    s->cap_w = c;
+    return SIM_OK;
+}
+
+int mps_neighbours(struct mps_solver *s)
+{
+    struct mps_particles *P = &s->P;
+    const struct mps_settings *S = &s->S;
+    TRY(cells_build(&s->grid, P->dim, P->x, P->n, s->re_max, s->box_lo,
+                    s->box_hi));
+    if (s->grid.n_outside) {
+        int lost = mps_particles_drop_outside(s);
+        s->n_escaped += lost;
+        log_info("    %d fluid particle(s) left the domain [%g %g %g] - "
+                 "[%g %g %g] and were removed (%ld in total)", lost,
+                 s->box_lo[0], s->box_lo[1], s->box_lo[2], s->box_hi[0],
+                 s->box_hi[1], s->box_hi[2], s->n_escaped);
+        if (s->n_escaped > S->max_escape_fraction * s->n_fluid0)
+            return sim_error(SIM_ERR_INPUT, "%ld of %d fluid particles have "
+                             "left the domain (more than maxEscapeFraction "
+                             "%g): the run is unstable or the tank is open",
+                             s->n_escaped, s->n_fluid0,
+                             S->max_escape_fraction);
+        TRY(cells_build(&s->grid, P->dim, P->x, P->n, s->re_max, s->box_lo,
+                        s->box_hi));
+    }
+    if (S->renumber_interval > 0 && s->step % S->renumber_interval == 0) {
+        memcpy(s->perm, s->grid.order, sizeof *s->perm * P->n);
+        mps_particles_permute(s, s->perm, P->n);
+        TRY(cells_build(&s->grid, P->dim, P->x, P->n, s->re_max, s->box_lo,
+                        s->box_hi));
+    }
+    TRY(neighbour_build(&s->nl, &s->grid, P->x, s->re_max));
+    TRY(grow_weights(s));
+    const double dp = s->dp;
+    S->kernel->weights(s->nl.r, s->nl.nnz, S->re_n * dp, s->w_n);
+    if (s->w_g != s->w_n)
+        S->kernel->weights(s->nl.r, s->nl.nnz, S->re_grad * dp, s->w_g);
+    if (s->w_l != s->w_n && s->w_l != s->w_g)
+        S->kernel->weights(s->nl.r, s->nl.nnz, S->re_lap * dp, s->w_l);
+    return SIM_OK;
+}

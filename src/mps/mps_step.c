@@ -1,0 +1,110 @@
+/*
+ * mps_step.c — one MPS time step m -> m+1 (Xie et al. 2025; METHODS.md
+ * A.10 steps 1 and 7-11 with eps = 1, no grains):
+ *
+ *   1. neighbour search (cells of the largest r_e; CSR list; renumbering)
+ *   7. prediction    u* = u^m + dt (nu <lap u^m> + g + f_ext)     eq. (10)
+ *   8. <n^m> (eq. 7) and free-surface flags (eqs. 14-16)
+ *   9. PPE (10)+(12), P = 0 on the free surface               (ppe.c)
+ *  10. correction    u^{m+1} = u* - (dt/rho) <grad P^{m+1}>       eq. (8)
+ *      [optional collision model]
+ *  11. r^{m+1} = r^m + dt u^{m+1}   [optional shifting]
+ *
+ * Wall and dummy particles keep u = 0 (fixed, no-slip walls, A.9). The
+ * coupling hooks inv_eps and f_ext are used when non-NULL.
+ */
+#include <math.h>
+#include <omp.h>
+#include <string.h>
+
+#include "core/error.h"
+#include "mps/mps.h"
+#include "mps/mps_impl.h"
+#include "mps/stabiliser/stabiliser.h"
+
+static void predict(struct mps_solver *s, double dt)
+{
+    struct mps_particles *P = &s->P;
+    const struct mps_settings *S = &s->S;
+    for (int i = 0; i < P->n; i++)
+        s->rows_fluid[i] = P->type[i] == MPS_FLUID;
+    mps_laplacian(&s->nl, s->w_l, P->dim, s->Ll.n0, s->Ll.lambda, 3, P->u,
+                  P->inv_eps, s->rows_fluid, s->lap);
+    const double *fe = P->f_ext;
+#pragma omp parallel for schedule(static)
+    for (int i = 0; i < P->n; i++)
+        for (int q = 0; q < 3; q++) {
+            double a = 0;
+            if (P->type[i] == MPS_FLUID)
+                a = S->nu * s->lap[3 * i + q] + S->g[q]
+                  + (fe ? fe[3 * i + q] : 0.0);
+            s->ustar[3 * i + q] = P->u[3 * i + q] + dt * a;
+        }
+    if (P->dim == 2)
+        for (int i = 0; i < P->n; i++)
+            s->ustar[3 * i + 2] = 0;
+}
+
+static void density(struct mps_solver *s)
+{
+    struct mps_particles *P = &s->P;
+    mps_number_density(&s->nl, s->w_n, P->inv_eps, NULL, P->nd);
+    const double inv_n0 = 1.0 / s->Ln.n0;
+#pragma omp parallel for schedule(static)
+    for (int i = 0; i < P->n; i++)
+        P->nd[i] *= inv_n0;
+    mps_free_surface(s);
+}
+
+static void correct(struct mps_solver *s, double dt)
+{
+    struct mps_particles *P = &s->P;
+    if (s->S.gradient_pmin)
+        mps_gradient_pmin(&s->nl, s->w_g, P->dim, s->Lg.n0, P->x, P->p,
+                          P->inv_eps, s->rows_fluid, s->grad);
+    else
+        mps_gradient(&s->nl, s->w_g, P->dim, s->Lg.n0, P->x, P->p,
+                     P->inv_eps, s->rows_fluid, s->grad);
+    const double c = dt / s->S.rho;
+#pragma omp parallel for schedule(static)
+    for (int i = 0; i < P->n; i++)
+        for (int q = 0; q < 3; q++)
+            P->u[3 * i + q] = P->type[i] == MPS_FLUID
+                            ? s->ustar[3 * i + q] - c * s->grad[3 * i + q]
+                            : 0.0;
+}
+
+static void move(struct mps_solver *s, double dt)
+{
+    struct mps_particles *P = &s->P;
+#pragma omp parallel for schedule(static)
+    for (int i = 0; i < P->n; i++)
+        if (P->type[i] == MPS_FLUID)
+            for (int q = 0; q < 3; q++)
+                P->x[3 * i + q] += dt * P->u[3 * i + q];
+}
+
+int mps_step(struct mps_solver *s, double dt)
+{
+    double t0 = omp_get_wtime();
+    TRY(mps_check_finite(s));     /* state handed in from outside */
+    TRY(mps_neighbours(s));
+    double t1 = omp_get_wtime();
+    predict(s, dt);
+    density(s);
+    double t2 = omp_get_wtime();
+    TRY(mps_ppe_solve(s, dt));
+    double t3 = omp_get_wtime();
+    mps_dummy_pressure(s);
+    correct(s, dt);
+    TRY(s->S.collision->apply(s, dt));
+    move(s, dt);
+    TRY(s->S.shifting->apply(s, dt));
+    double t4 = omp_get_wtime();
+    s->t.neighbours += t1 - t0;
+    s->t.explicit_ += t2 - t1;
+    s->t.correction += t4 - t3;
+    s->t.steps++;
+    s->step++;
+    return mps_check_finite(s);
+}

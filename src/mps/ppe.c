@@ -1,0 +1,156 @@
+/*
+ * ppe.c — the pressure Poisson equation with the mixed source term
+ * (Xie et al. 2025 eq. 12, Model A form with eps = 1; METHODS.md A.4):
+ *
+ *   <lap P^{m+1}>_i = (1 - gamma) (rho/dt) <div u*>_i
+ *                     - gamma (rho/dt^2) (<n^m>_i - n0)/n0
+ *
+ * with the Laplacian (10) over fluid and wall particles (dummies only fill
+ * the number density), the divergence (9) on the gradient radius, and <n^m>
+ * at the current positions (A0-05: no predictor position update).
+ * Unknowns are the fluid and wall particles that are neither free surface
+ * nor dry wall; those carry the Dirichlet value P = 0 and drop out.
+ * We solve A p = b with A = -lap (SPD M-matrix for eps = 1), so
+ *   A_ii = c sum_j w_ij/eps_j,  A_ij = -c w_ij/eps_j (j unknown),
+ *   c = 2d/(n0 lambda),  b_i = -RHS_i.
+ * With porosity the matrix becomes non-symmetric (A.4 [P]); select
+ * bicgstab then. The warm start is the pressure of the previous step.
+ */
+#include <math.h>
+#include <omp.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "core/error.h"
+#include "core/log.h"
+#include "mps/mps.h"
+#include "mps/mps_impl.h"
+
+static int grow_matrix(struct mps_solver *s, int64_t nnz)
+{
+    if ((size_t)nnz <= s->cap_nnz)
+        return SIM_OK;
+    size_t c = (size_t)nnz + (size_t)nnz / 4 + 64;
+    int32_t *col = sim_realloc(s->A.col, c * sizeof *col);
+    if (!col)
+        return SIM_ERR_NOMEM;
+    s->A.col = col;
+    double *val = sim_realloc(s->A.val, c * sizeof *val);
+    if (!val)
+        return SIM_ERR_NOMEM;
+    s->A.val = val;
+    s->cap_nnz = c;
+    return SIM_OK;
+}
+
+/* Number unknowns; rows_ppe marks fluid and wall rows (for div u*). */
+static int number_unknowns(struct mps_solver *s)
+{
+    struct mps_particles *P = &s->P;
+    int m = 0;
+    for (int i = 0; i < P->n; i++) {
+        int inside = P->type[i] != MPS_DUMMY;
+        s->rows_ppe[i] = (uint8_t)inside;
+        s->unk[i] = (inside && P->fs[i] == MPS_INNER) ? m++ : -1;
+    }
+    return m;
+}
+
+static int assemble(struct mps_solver *s, int m)
+{
+    const struct mps_particles *P = &s->P;
+    const struct neighbour_list *nl = &s->nl;
+    const double *w = s->w_l, *ie = P->inv_eps;
+    const double c = 2.0 * P->dim / (s->Ll.n0 * s->Ll.lambda);
+    int64_t *rp = s->A.rowptr;
+    /* pass 1: row lengths (diagonal + unknown neighbours) */
+#pragma omp parallel for schedule(static)
+    for (int i = 0; i < P->n; i++) {
+        if (s->unk[i] < 0)
+            continue;
+        int64_t len = 1;
+        for (int64_t k = nl->start[i]; k < nl->start[i + 1]; k++)
+            len += w[k] > 0 && s->unk[nl->j[k]] >= 0;
+        rp[s->unk[i] + 1] = len;
+    }
+    rp[0] = 0;
+    for (int r = 0; r < m; r++)
+        rp[r + 1] += rp[r];
+    TRY(grow_matrix(s, rp[m]));
+    s->A.n = m;
+    s->A.nnz = rp[m];
+    /* pass 2: values; the diagonal first in each row */
+#pragma omp parallel for schedule(static)
+    for (int i = 0; i < P->n; i++) {
+        int r = s->unk[i];
+        if (r < 0)
+            continue;
+        int64_t pos = rp[r] + 1;
+        double diag = 0;
+        for (int64_t k = nl->start[i]; k < nl->start[i + 1]; k++) {
+            int j = nl->j[k];
+            if (w[k] == 0 || P->type[j] == MPS_DUMMY)
+                continue;
+            double a = c * w[k] * (ie ? ie[j] : 1.0);
+            diag += a;
+            if (s->unk[j] >= 0) {
+                s->A.col[pos] = s->unk[j];
+                s->A.val[pos++] = -a;
+            }
+        }
+        s->A.col[rp[r]] = r;
+        /* A row with no fluid/wall neighbour cannot happen for an inner
+         * particle (n >= beta n0); keep the matrix regular anyway. */
+        s->A.val[rp[r]] = diag > 0 ? diag : 1.0;
+    }
+    return SIM_OK;
+}
+
+static void source(struct mps_solver *s, double dt)
+{
+    const struct mps_particles *P = &s->P;
+    const double g = s->S.gamma, rho = s->S.rho;
+    mps_divergence(&s->nl, s->w_g, P->dim, s->Lg.n0, P->x, s->ustar,
+                   P->inv_eps, s->rows_ppe, s->div);
+#pragma omp parallel for schedule(static)
+    for (int i = 0; i < P->n; i++) {
+        int r = s->unk[i];
+        if (r < 0)
+            continue;
+        double dn = P->nd[i] - 1.0;
+        double rhs = (1 - g) * rho / dt * s->div[i]
+                   - g * rho / (dt * dt) * dn;
+        s->b[r] = -rhs;
+        s->sol[r] = P->p[i];
+    }
+}
+
+int mps_ppe_solve(struct mps_solver *s, double dt)
+{
+    struct mps_particles *P = &s->P;
+    double t0 = omp_get_wtime();
+    int m = number_unknowns(s);
+    TRY(assemble(s, m));
+    source(s, dt);
+    double t1 = omp_get_wtime();
+    s->t.assembly += t1 - t0;
+    int rc = SIM_OK;
+    if (m > 0)
+        rc = linsolve_solve(s->ls, &s->A, s->b, s->sol, &s->last);
+    else
+        memset(&s->last, 0, sizeof s->last);
+    s->t.ppe += omp_get_wtime() - t1;
+    s->t.ppe_iters += s->last.iters;
+#pragma omp parallel for schedule(static)
+    for (int i = 0; i < P->n; i++)
+        if (P->type[i] != MPS_DUMMY)
+            P->p[i] = s->unk[i] >= 0 ? s->sol[s->unk[i]] : 0.0;
+    if (rc) {
+        char why[512];
+        snprintf(why, sizeof why, "%s", sim_error_message());
+        return sim_error(rc, "step %ld: the pressure Poisson equation (%d "
+                         "unknowns) failed: %s", s->step, m, why);
+    }
+    return SIM_OK;
+}

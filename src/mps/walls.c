@@ -1,0 +1,96 @@
+/*
+ * walls.c — wall and dummy particles (METHODS.md A.9, after Koshizuka et
+ * al. 1998 and MLParticle-SJTU practice):
+ *
+ *   - wall particles (one layer) are unknowns of the PPE, have the wall
+ *     velocity (0: fixed walls) and are never free surface;
+ *   - dummy particles (ceil(r_e/dp) - 1 layers behind) only complete the
+ *     number density and the neighbour sums; their pressure is that of the
+ *     nearest wall particle (A.9 default; `dummyPressure zero;` gives the
+ *     Koshizuka original p = 0), so that the (p_i + p_j) gradient (eq. 8)
+ *     holds the fluid off the wall;
+ *   - the load on a patch is F = sum_i p_i dp^(d-1) n_i over its wall
+ *     particles, n_i the unit normal from the fluid into the solid
+ *     (A.9 [P]); in 2-D it is per unit depth [N/m].
+ */
+#include <math.h>
+#include <string.h>
+
+#include "core/error.h"
+#include "core/log.h"
+#include "mps/mps.h"
+#include "mps/mps_impl.h"
+
+int mps_find_partners(struct mps_solver *s)
+{
+    struct mps_particles *P = &s->P;
+    const struct neighbour_list *nl = &s->nl;
+    int orphans = 0;
+    for (int i = 0; i < P->n; i++) {
+        P->partner[i] = -1;
+        if (P->type[i] != MPS_DUMMY)
+            continue;
+        double best = INFINITY;
+        for (int64_t k = nl->start[i]; k < nl->start[i + 1]; k++) {
+            int j = nl->j[k];
+            if (P->type[j] != MPS_WALL)
+                continue;
+            /* ties (corners) go to the smaller id: independent of order */
+            double r = nl->r[k];
+            if (r < best - 1e-9 * s->dp
+                || (r < best + 1e-9 * s->dp && P->partner[i] >= 0
+                    && P->id[j] < P->id[P->partner[i]])) {
+                best = fmin(best, r);
+                P->partner[i] = j;
+            }
+        }
+        orphans += P->partner[i] < 0;
+    }
+    /* Deep corner dummies are farther than r_e from every wall particle:
+     * they borrow the partner of their nearest dummy that has one. */
+    for (int pass = 0; pass < 4 && orphans; pass++) {
+        orphans = 0;
+        for (int i = 0; i < P->n; i++) {
+            if (P->type[i] != MPS_DUMMY || P->partner[i] >= 0)
+                continue;
+            double best = INFINITY;
+            for (int64_t k = nl->start[i]; k < nl->start[i + 1]; k++) {
+                int j = nl->j[k];
+                if (P->type[j] == MPS_DUMMY && P->partner[j] >= 0
+                    && nl->r[k] < best) {
+                    best = nl->r[k];
+                    P->partner[i] = P->partner[j];
+                }
+            }
+            orphans += P->partner[i] < 0;
+        }
+    }
+    if (orphans)
+        log_warn("%d dummy particle(s) have no wall particle within r_e = "
+                 "%g m; their pressure stays 0", orphans, s->re_max);
+    return SIM_OK;
+}
+
+void mps_dummy_pressure(struct mps_solver *s)
+{
+    struct mps_particles *P = &s->P;
+    const int zero = s->S.dummy_pressure_zero;
+#pragma omp parallel for schedule(static)
+    for (int i = 0; i < P->n; i++)
+        if (P->type[i] == MPS_DUMMY)
+            P->p[i] = (!zero && P->partner[i] >= 0) ? P->p[P->partner[i]] : 0;
+}
+
+void mps_wall_forces(const struct mps_solver *s, int npatch, double *force)
+{
+    const struct mps_particles *P = &s->P;
+    double area = P->dim == 3 ? s->dp * s->dp : s->dp;
+    memset(force, 0, sizeof *force * 3 * (size_t)npatch);
+    for (int i = 0; i < P->n; i++) {
+        int k = P->patch[i];
+        if (P->type[i] != MPS_WALL || k < 0 || k >= npatch)
+            continue;
+        for (int q = 0; q < 3; q++)
+            force[3 * k + q] += P->p[i] * area * P->normal[3 * i + q];
+    }
+}
