@@ -475,6 +475,7 @@ int channel_close(struct channel *c, int status)
             rc = sim_error(SIM_ERR_IO, "%s: cannot remove channel %s: %s",
                            c->set.program, c->set.name, strerror(errno));
         flock(c->fd, LOCK_UN);
+        remove_dead_drafts(c->set.name);
     }
     chan_registry_remove(c);
     unmap_segment(c);

@@ -128,6 +128,10 @@ int channel_send_begin(struct channel *c, uint32_t kind, uint32_t flags,
     if (c->pending)
         return sim_error(SIM_ERR_INTERNAL, "channel_send_begin called twice "
                          "without channel_send_commit");
+    /* a frame for a peer that has left would be lost without a word */
+    int st = atomic_load(&c->hdr->side[c->peer].state);
+    if (st == SIDE_CLOSED || st == SIDE_FAILED)
+        TRY(chan_check_peer(c));
     if (bytes > ring->capacity)
         TRY(grow(c, bytes));
     snprintf(what, sizeof what, "free frame slot (%s is not reading)",

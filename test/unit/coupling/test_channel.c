@@ -364,6 +364,11 @@ static void test_close_delivers_frames_in_flight(void **state)
         assert_true(*(const double *)p == 42.0);
         assert_int_equal(channel_recv_done(c), SIM_OK);
     }
+    /* sending to a peer that left is an error, not a silent loss */
+    double y = 1.0;
+    struct channel_frame g = { .kind = 1, .bytes = sizeof y };
+    assert_int_equal(channel_send(c, &g, &y), SIM_ERR_PEER);
+    assert_non_null(strstr(sim_error_message(), "closed the channel"));
     double t0 = now_s();
     assert_int_equal(channel_recv(c, &f, &p), SIM_ERR_PEER);
     assert_true(now_s() - t0 < 2.0);
