@@ -123,7 +123,8 @@ int channel_settings_default(struct channel_settings *s, int side,
                              const char *program, const char *case_dir);
 
 /* Read system/couplingDict entries into s (after channel_settings_default):
- *   channel            word    segment name           (default: derived)
+ *   channel            word    segment name, /dev/shm/<word> (default:
+ *                              derived from the user id and case path)
  *   timeout            [s]     handshake and per wait (default 60)
  *   heartbeatInterval  [s]     liveness period        (default 0.1)
  *   framesInFlight     label   ring slots             (default 2)

@@ -41,13 +41,14 @@ int channel_settings_from_dict(const struct dict *d,
 
     TRY(dict_get_string_or(d, "channel", "", &name));
     if (name[0]) {
-        if (name[0] != '/' || strchr(name + 1, '/') || !name[1] ||
-            strlen(name) > CHANNEL_NAME_MAX - 24)
+        const char *bare = name[0] == '/' ? name + 1 : name;
+        if (!bare[0] || strchr(bare, '/') ||
+            strlen(bare) > CHANNEL_NAME_MAX - 25)
             return dict_error(d, "channel", SIM_ERR_DICT, "channel name "
-                              "'%s' must start with '/', contain no other "
-                              "'/' and have at most %d characters", name,
-                              CHANNEL_NAME_MAX - 24);
-        snprintf(s->name, sizeof s->name, "%s", name);
+                              "'%s' must be a non-empty word without '/' "
+                              "(an optional leading '/' aside) of at most "
+                              "%d characters", name, CHANNEL_NAME_MAX - 25);
+        snprintf(s->name, sizeof s->name, "/%s", bare);
     }
     TRY(dict_get_scalar_or(d, "timeout", s->timeout, &s->timeout));
     if (!(s->timeout > 0))
