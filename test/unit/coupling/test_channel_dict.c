@@ -39,10 +39,10 @@ static void test_keys_and_defaults(void **state)
                                "heartbeatInterval 0.02;\nframesInFlight 4;\n",
                                &s), SIM_OK);
     assert_string_equal(s.name, "/myCase");
-    assert_int_equal(from_text("channel myCase;\n", &s), SIM_OK);
-    assert_string_equal(s.name, "/myCase");
     assert_true(s.timeout == 5.0 && s.heartbeat_interval == 0.02);
     assert_int_equal(s.nslots, 4);
+    assert_int_equal(from_text("channel myCase;\n", &s), SIM_OK);
+    assert_string_equal(s.name, "/myCase");
 }
 
 static void test_bad_values_located(void **state)
