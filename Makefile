@@ -33,6 +33,18 @@ EXTLIBS := -Wl,--as-needed $(shell pkg-config --libs libxml-2.0 2>/dev/null) \
            -lpthread -lm
 TESTLIBS := $(shell pkg-config --libs cmocka 2>/dev/null)
 
+# Optional hypre BoomerAMG-PCG back-end of src/linsolve (`solver hypre;`):
+# Debian's hypre is an MPI build, so everything is compiled with mpicc into
+# separate directories (build-hypre/, bin-hypre/).  make HYPRE=1
+HYPRE ?= 0
+ifeq ($(HYPRE),1)
+BUILD   := $(BUILD)-hypre
+BINDIR  := $(BINDIR)-hypre
+CC      := mpicc
+CFLAGS  += -DMPSDEM_HAVE_HYPRE -I/usr/include/hypre
+EXTLIBS += -lHYPRE
+endif
+
 LIBNAMES := $(notdir $(patsubst %/,%,$(wildcard src/*/)))
 APPDIRS  := $(patsubst %/,%,$(wildcard applications/*/*/))
 APPS     := $(notdir $(APPDIRS))
@@ -102,7 +114,7 @@ $(BUILD)/obj/%.o: %.c
 -include $(shell find $(BUILD)/obj -name '*.d' 2>/dev/null)
 
 clean:
-	rm -rf build build-san bin bin-san
+	rm -rf build build-san bin bin-san build-hypre build-san-hypre bin-hypre bin-san-hypre
 
 .PHONY: all libs apps tests clean
 .DELETE_ON_ERROR:

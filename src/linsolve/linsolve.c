@@ -81,13 +81,14 @@ int linsolve_create_named(const char *solver, const char *precond, double tol,
     if (maxiter < 1)
         return sim_error(SIM_ERR_INPUT, "linear solver maxIter %d is not "
                          "positive", maxiter);
-    if (so->iterative)
+    int ours = so->iterative && !so->own_pc; /* uses our preconditioner */
+    if (ours)
         TRY(linsolve_check_combination(so, po));
     struct linsolve *s = sim_calloc(1, sizeof *s);
     if (!s)
         return SIM_ERR_NOMEM;
     s->solver = so;
-    s->pc.ops = so->iterative ? po : &precond_none;
+    s->pc.ops = ours ? po : &precond_none;
     s->tol = tol;
     s->maxiter = maxiter;
     s->warm_start = 1;

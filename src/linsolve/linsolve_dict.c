@@ -33,8 +33,9 @@ int linsolve_create(const struct dict *d, struct linsolve **out)
     TRY(model_select(d, "solver", "linear solver",
                      (const void *const *)linsolve_solvers, "pcg", &so));
     const struct solver_ops *sops = so;
-    po = &precond_none; /* a direct solver reads no preconditioner */
-    if (sops->iterative)
+    po = &precond_none; /* direct solvers and hypre read no preconditioner */
+    int ours = sops->iterative && !sops->own_pc;
+    if (ours)
         TRY(model_select(d, "preconditioner", "preconditioner",
                          (const void *const *)linsolve_preconditioners,
                          "jacobi", &po));
@@ -48,8 +49,7 @@ int linsolve_create(const struct dict *d, struct linsolve **out)
                           "[1, 1e9]", maxiter);
     TRY(dict_get_bool_or(d, "warmStart", 1, &warm));
     char msg[512];
-    if (sops->iterative &&
-        linsolve_check_combination(sops, po) != SIM_OK) {
+    if (ours && linsolve_check_combination(sops, po) != SIM_OK) {
         snprintf(msg, sizeof msg, "%s", sim_error_message());
         return dict_error(d, "preconditioner", SIM_ERR_DICT, "%s", msg);
     }

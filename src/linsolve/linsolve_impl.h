@@ -79,6 +79,8 @@ struct solver_ops {
     int iterative;       /* uses the preconditioner, maxIter and warm start */
     int needs_symmetric; /* refuses a non-symmetric matrix                  */
     int needs_spd_pc;    /* needs a preconditioner with ops->spd            */
+    int own_pc;          /* brings its own preconditioner (hypre's AMG):
+                            ours is not read and stays none                */
     /* Called once at creation; may refuse (e.g. not compiled in). */
     int (*init)(struct linsolve *s);
     /* x: initial guess on entry (iterative solvers), solution on exit.
