@@ -65,8 +65,10 @@
  *     channel_close(ch, rc);                      // unlinks when last out
  *     if (rc) app_fatal(...);
  *
- * A long computation between messages may call channel_poll() to notice
- * a dead peer or a signal before its next message.
+ * A step longer than 2 s between messages (DEM sub-stepping, a large PPE)
+ * should call channel_poll() in its loop, e.g. once per sub-step: it costs
+ * about 0.3 us (one poll() on the peer's pidfd) and lets the program notice
+ * a dead peer or a signal in time, not only at its next message.
  */
 #ifndef MPSDEM_COUPLING_CHANNEL_H
 #define MPSDEM_COUPLING_CHANNEL_H
@@ -160,7 +162,7 @@ int channel_recv(struct channel *c, struct channel_frame *f,
 int channel_recv_done(struct channel *c);
 
 /* Without waiting: SIM_OK, or the code a wait would return now (signal,
- * peer gone). For long computations between messages. */
+ * peer gone). For long computations between messages; ~0.3 us a call. */
 int channel_poll(struct channel *c);
 
 /* Leave: publish `status` (SIM_OK for a normal end, else the error code)
