@@ -148,7 +148,7 @@ static void run_case(const struct bcase *c, int reps, int cholmod,
            "ns/row/it", "GB/s", "%STREAM");
     static const char *combos[][2] = {{"pcg", "jacobi"}, {"pcg", "dic"},
                                       {"pcg", "ic0"}, {"bicgstab", "jacobi"},
-                                      {"bicgstab", "ilu0"}};
+                                      {"bicgstab", "ilu0"}, {"hypre", "none"}};
     for (size_t k = 0; k < sizeof combos / sizeof combos[0]; k++)
         run_solver(combos[k][0], combos[k][1], &A1, b1, &A2, b2, reps, stream);
     if (cholmod)
