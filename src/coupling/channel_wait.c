@@ -17,6 +17,7 @@
 #include <limits.h>
 #include <linux/futex.h>
 #include <poll.h>
+#include <sched.h>
 #include <signal.h>
 #include <string.h>
 #include <sys/pidfd.h>
@@ -177,7 +178,12 @@ int chan_wait(struct channel *c, int (*ready)(struct channel *, void *),
     for (int i = 0; i < CHAN_SPIN; i++) {
         if (ready(c, arg))
             return SIM_OK;
-        cpu_relax();
+        /* the peer may be waiting for this very core (2 cores, OpenMP
+         * threads, other jobs): offer it now and then */
+        if (i % 32 == 31)
+            sched_yield();
+        else
+            cpu_relax();
     }
     uint64_t t0 = chan_now_ns(), limit = (uint64_t)(timeout * 1e9);
     for (;;) {
