@@ -6,11 +6,25 @@
  * PPE sub-dictionary of system/mpsSolution) or from plain values.
  *
  *   solver          pcg | bicgstab | cholmod | hypre     (default pcg)
- *   preconditioner  none | jacobi | ic0 | dic             (default jacobi)
+ *   preconditioner  none | jacobi | ic0 | dic | ilu0      (default jacobi)
  *   tolerance       relative, on ||b - A x||_2 / ||b||_2  (default 1e-8)
  *   maxIter         (default 1000)
  *   warmStart       yes | no                              (default yes)
  *
+ * pcg takes none, jacobi, ic0 or dic (symmetric positive definite matrix);
+ * bicgstab (non-symmetric PPE of the coupled case, porosity weights) takes
+ * none, jacobi or ilu0; cholmod (direct; SPD only, small systems and tests)
+ * and hypre (BoomerAMG-PCG, only in a `make HYPRE=1` build) read no
+ * preconditioner. Other pairs are refused with a message.
+ *
+ * Every system is validated (n > 0, structure, finite values, positive
+ * diagonal, finite b) and every answer passes a true-residual check, so a
+ * solve either meets its tolerance or returns an error: SIM_ERR_INPUT or
+ * SIM_ERR_NUMERIC for a bad system, SIM_ERR_SOLVER for no convergence or a
+ * matrix that is not positive definite where it must be.
+ *
+ * The same solvers as a SUNDIALS SUNLinearSolver: sunlinsol_ppe.h.
+ * Helpers (SpMV, checks, the benchmark matrix): csr.h.
  * See toolchain.md §2 for the benchmark that chose these defaults.
  */
 #ifndef MPSDEM_LINSOLVE_LINSOLVE_H
