@@ -26,7 +26,8 @@ void dem_free(struct dem *d)
     free(d->acc); free(d->alpha);
     free(d->walls);
     nlist_free(&d->nl);
-    free(d->hist); free(d->whist);
+    free(d->hist); free(d->whist); free(d->pair_c); free(d->wall_chi);
+    free(d->wstart); free(d->wlist);
     free(d->tbuf);
     free(d->cpl.fd); free(d->cpl.fd_sum);
     memset(d, 0, sizeof *d);
@@ -62,12 +63,57 @@ int dem_resize(struct dem *d, size_t n)
     return SIM_OK;
 }
 
+/* Walls within reach of each grain (distance < R + skin), valid as long as
+ * the neighbour list is: the force loop then skips the far walls, as
+ * LIGGGHTS' wall neighbour lists do. */
+static int wall_candidates(struct dem *d)
+{
+    size_t k = 0;
+    d->wstart[0] = 0;
+    for (size_t i = 0; i < d->n; i++) {
+        for (int w = 0; w < d->nwalls; w++) {
+            if (wall_distance(&d->walls[w], &d->x[3 * i])
+                >= d->r[i] + d->nl.skin)
+                continue;
+            if (k == d->wlist_cap) {
+                size_t cap = d->wlist_cap ? 2 * d->wlist_cap : 1024;
+                GROW(d->wlist, cap);
+                d->wlist_cap = cap;
+            }
+            d->wlist[k++] = w;
+        }
+        d->wstart[i + 1] = k;
+    }
+    return SIM_OK;
+}
+
+/* Per-pair and per-grain constants of the contact law (chi, m*), set
+ * after every build so that the force loop needs no division for them. */
+static void pair_constants(struct dem *d)
+{
+    for (size_t i = 0; i < d->nl.n; i++) {
+        d->wall_chi[i] = contact_chi(&d->law.c, d->r[i]);
+        for (size_t p = d->nl.start[i]; p < d->nl.start[i + 1]; p++) {
+            size_t j = d->nl.j[p];
+            double rs = d->r[i] * d->r[j] / (d->r[i] + d->r[j]);
+            d->pair_c[2 * p] = contact_chi(&d->law.c, rs);
+            d->pair_c[2 * p + 1] = d->m[i] * d->m[j] / (d->m[i] + d->m[j]);
+        }
+    }
+}
+
 static int reserve_histories(struct dem *d)
 {
+    if (d->n + 1 > d->wchi_cap) {
+        GROW(d->wall_chi, d->n + 1);
+        GROW(d->wstart, d->n + 1);
+        d->wchi_cap = d->n + 1;
+    }
     size_t np = d->nl.npairs > 0 ? d->nl.npairs : 1;
     if (np > d->hist_cap) {
         size_t cap = np + np / 2;
         GROW(d->hist, 3 * cap);
+        GROW(d->pair_c, 2 * cap);
         d->hist_cap = cap;
     }
     size_t nw = d->n * (size_t)d->nwalls;
@@ -103,6 +149,8 @@ int dem_setup(struct dem *d)
     TRY(nlist_build(&d->nl, d->n, d->x, d->r));
     d->stats.rebuilds++;
     TRY(reserve_histories(d));
+    pair_constants(d);
+    TRY(wall_candidates(d));
     memset(d->hist, 0, 3 * d->hist_cap * sizeof *d->hist);
     memset(d->whist, 0, 3 * d->whist_cap * sizeof *d->whist);
     return SIM_OK;
@@ -145,8 +193,11 @@ static int rebuild(struct dem *d, const double *x, const size_t *map,
     int rc = nlist_build(&d->nl, d->n, x, d->r);
     if (rc == SIM_OK)
         rc = reserve_histories(d);
-    if (rc == SIM_OK)
+    if (rc == SIM_OK) {
         nlist_carry(&d->nl, ostart, oj, row, oh, 3, d->hist);
+        pair_constants(d);
+        rc = wall_candidates(d);
+    }
     d->stats.rebuilds++;
     free(ostart), free(oj), free(oh);
     return rc;

@@ -79,9 +79,18 @@ struct dem {
     /* neighbours and contact history */
     struct dem_nlist nl;
     double *hist;                 /* 3 per candidate pair                   */
+    double *pair_c;               /* 2 per pair: chi, m* (constant while
+                                     the list lives)                       */
     size_t hist_cap;
     double *whist;                /* 3 per grain and wall                   */
-    size_t whist_cap;
+    double *wall_chi;             /* per grain: chi of a wall contact       */
+    size_t *wstart;               /* n + 1: walls near each grain (CSR), */
+    int *wlist;                   /* built with the neighbour list        */
+    size_t wlist_cap;
+    int use_wlist;                /* 1: only listed walls are checked; an
+                                     integrator sets it when no grain can
+                                     travel skin/2 between list checks */
+    size_t whist_cap, wchi_cap;
     double *tbuf;                 /* per-thread force/torque accumulation   */
     size_t tbuf_cap;
     /* results of the last force evaluation */
@@ -95,6 +104,8 @@ struct dem {
                                      saved at writes so a restart repeats the
                                      continuous run */
     size_t omp_min;               /* fewer grains: force loop on 1 thread */
+    double kick;                  /* != 0: dem_forces ends with
+                                     v += kick a, w += kick alpha (Verlet) */
     struct dem_coupling cpl;
     struct dem_stats stats;
 };

@@ -18,6 +18,7 @@
 #include <string.h>
 
 #include "core/error.h"
+#include "dem/contact/contact_fused.h"
 #include "dem/dem.h"
 
 static inline void cross3(const double *a, const double *b, double *c)
@@ -65,6 +66,7 @@ static void pair_row(struct dem *d, size_t i, const double *x, const double *v,
                      const double *w, double tau, int commit, double *f,
                      double *t, long *nc, double *om2)
 {
+    int fused = contact_law_is_fused(&d->law);
     for (size_t p = d->nl.start[i]; p < d->nl.start[i + 1]; p++) {
         size_t j = d->nl.j[p];
         struct contact_geom g;
@@ -80,17 +82,23 @@ static void pair_row(struct dem *d, size_t i, const double *x, const double *v,
                 h[0] = h[1] = h[2] = 0;   /* the contact ended */
             continue;
         }
-        double dist = sqrt(d2);
+        /* divisions dominate the geometry: one reciprocal each */
+        double dist = sqrt(d2), inv = 1.0 / dist;
         for (int a = 0; a < 3; a++)
-            g.n[a] = dx[a] / dist;
+            g.n[a] = dx[a] * inv;
         g.delta = rs - dist;
-        g.rstar = d->r[i] * d->r[j] / rs;
-        g.mstar = d->m[i] * d->m[j] / (d->m[i] + d->m[j]);
+        g.rstar = fused ? 0.0 : d->r[i] * d->r[j] / rs;
+        g.chi = d->pair_c[2 * p];
+        g.mstar = d->pair_c[2 * p + 1];
+        double sum_inv_m = d->inv_m[i] + d->inv_m[j];
         fill_kinematics(&g, &v[3 * i], &w[3 * i], d->r[i], &v[3 * j],
                         &w[3 * j], d->r[j]);
         struct contact_result res;
         double hn[3];
-        contact_eval(&d->law, &g, &d->hist[3 * p], tau, hn, &res);
+        if (fused)
+            contact_eval_fused(&d->law, &g, &d->hist[3 * p], tau, hn, &res);
+        else
+            contact_eval(&d->law, &g, &d->hist[3 * p], tau, hn, &res);
         if (commit)
             memcpy(&d->hist[3 * p], hn, sizeof hn);
         double tc[3];
@@ -102,7 +110,7 @@ static void pair_row(struct dem *d, size_t i, const double *x, const double *v,
             t[3 * j + a] += d->r[j] * tc[a] - res.mroll[a];
         }
         (*nc)++;
-        double w2 = res.kn / g.mstar;
+        double w2 = res.kn * sum_inv_m;
         *om2 = w2 > *om2 ? w2 : *om2;
     }
 }
@@ -112,7 +120,11 @@ static void wall_row(struct dem *d, size_t i, const double *x, const double *v,
                      const double *w, double tau, int commit, double *f,
                      double *t, double *pf, long *nc, double *om2)
 {
-    for (int wl = 0; wl < d->nwalls; wl++) {
+    int fused = contact_law_is_fused(&d->law);
+    size_t q0 = d->use_wlist ? d->wstart[i] : 0;
+    size_t q1 = d->use_wlist ? d->wstart[i + 1] : (size_t)d->nwalls;
+    for (size_t q = q0; q < q1; q++) {
+        int wl = d->use_wlist ? d->wlist[q] : (int)q;
         size_t hk = 3 * (i * (size_t)d->nwalls + (size_t)wl);
         struct contact_geom g;
         if (!wall_contact_inline(&d->walls[wl], &x[3 * i], d->r[i], g.n,
@@ -124,10 +136,14 @@ static void wall_row(struct dem *d, size_t i, const double *x, const double *v,
         }
         g.rstar = d->r[i];
         g.mstar = d->m[i];
+        g.chi = d->wall_chi[i];
         fill_kinematics(&g, &v[3 * i], &w[3 * i], d->r[i], NULL, NULL, 0);
         struct contact_result res;
         double hn[3];
-        contact_eval(&d->law, &g, &d->whist[hk], tau, hn, &res);
+        if (fused)
+            contact_eval_fused(&d->law, &g, &d->whist[hk], tau, hn, &res);
+        else
+            contact_eval(&d->law, &g, &d->whist[hk], tau, hn, &res);
         if (commit)
             memcpy(&d->whist[hk], hn, sizeof hn);
         double tc[3];
@@ -139,7 +155,7 @@ static void wall_row(struct dem *d, size_t i, const double *x, const double *v,
             pf[3 * pa + a] -= res.f[a];
         }
         (*nc)++;
-        double w2 = res.kn / g.mstar;
+        double w2 = res.kn * d->inv_m[i];
         *om2 = w2 > *om2 ? w2 : *om2;
     }
 }
@@ -155,6 +171,7 @@ static int finish(struct dem *d, const double *v, const double *f,
             return rc;
     }
     int drag = c->drag && c->uf && c->eps;
+    double kick = d->kick;
     #pragma omp parallel for schedule(static) if (d->n > DEM_OMP_MIN)
     for (size_t i = 0; i < d->n; i++)
         for (int a = 0; a < 3; a++) {
@@ -163,6 +180,10 @@ static int finish(struct dem *d, const double *v, const double *f,
                         + (drag ? c->fd[k] : 0.0);
             acc[k] = fk * d->inv_m[i] + d->gravity[a];
             alpha[k] = t[k] * d->inv_i[i];
+            if (kick != 0) {   /* Verlet's closing half kick, same pass */
+                d->v[k] += kick * acc[k];
+                d->w[k] += kick * alpha[k];
+            }
         }
     return SIM_OK;
 }

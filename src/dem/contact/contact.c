@@ -30,6 +30,7 @@ int contact_coeffs_init(struct contact_coeffs *c)
                          c->rho);
     c->estar = c->E / (2.0 * (1.0 - c->nu * c->nu));
     c->ratio_t = 1.0 / (2.0 + c->nu);
+    c->hertz_tn = sqrt(c->ratio_t / 1.5);
     double le = log(c->e);
     c->beta = -le / sqrt(le * le + M_PI * M_PI);
     return SIM_OK;

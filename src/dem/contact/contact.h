@@ -37,6 +37,8 @@ struct contact_coeffs {
     double estar;       /* E/(2(1 - nu^2)) [Pa]                          */
     double ratio_t;     /* chi^t/chi^n, eq. (22): 1/(2 + nu) (A0-08)     */
     double beta;        /* -ln e / sqrt(ln^2 e + pi^2), eqs. (23)-(24)   */
+    double hertz_tn;    /* sqrt(kt/kn) of the Hertz law = sqrt(ratio_t/1.5),
+                           so that eta^t = eta^n hertz_tn without a sqrt */
     double kn_linear;   /* >0: fixed linear stiffness [N/m] overriding chi */
     double mu_roll;     /* rolling friction coefficient (constantTorque) */
     double eta_roll;    /* rolling viscosity [N m s] (viscous)           */
@@ -51,6 +53,9 @@ struct contact_geom {
     double wrel[3];  /* w_k - w_l [rad/s] (wall: w_k)                    */
     double rstar;    /* effective radius [m]                             */
     double mstar;    /* effective mass [kg]                              */
+    double chi;      /* (4/3) E* sqrt(R*) [N/m^1.5], cached per pair for
+                        the fused law (contact_fused.h); the generic
+                        sub-models compute it from rstar themselves     */
 };
 
 /* Normal elastic law. */

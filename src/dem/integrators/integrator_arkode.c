@@ -204,6 +204,9 @@ static int ark_create(struct dem *d, const struct dem_integrator_params *p,
         return SIM_ERR_NOMEM;
     a->p = *p;
     a->d = d;
+    /* a stage may carry a grain well past skin/2 towards a wall (the step
+     * is limited by the wall gap, not the skin): check every wall */
+    d->use_wlist = 0;
     if (SUNContext_Create(NULL, &a->sun)) {
         free(a);
         return sim_error(SIM_ERR_EXTERNAL, "SUNContext_Create failed");

@@ -19,6 +19,7 @@
 #include <cmocka.h>
 
 #include "../../unit/dem/dem_test_helpers.h"
+#include "dem/contact/contact_fused.h"
 
 static double rel(double a, double b) { return fabs(a - b) / fabs(b); }
 
@@ -374,6 +375,62 @@ static void test_oblique_impact(void **state)
     }
 }
 
+/* The fused default law (contact_fused.h) against the generic composition
+ * of its sub-models, on random contacts, sticking and sliding. */
+static void test_fused_equals_generic(void **state)
+{
+    (void)state;
+    struct contact_law law = {&contact_normal_hertz,
+                              &contact_damping_restitution,
+                              &contact_tangential_coulomb,
+                              &contact_rolling_none,
+                              {.E = T1_E, .nu = T1_NU, .rho = T1_RHO,
+                               .mu = T1_MU, .e = T1_E_REST}};
+    assert_int_equal(contact_coeffs_init(&law.c), SIM_OK);
+    assert_true(contact_law_is_fused(&law));
+    unsigned seed = 12345;
+    int slid = 0, stuck = 0;
+    for (int k = 0; k < 2000; k++) {
+        double u[12];
+        for (int q = 0; q < 12; q++) {
+            seed = seed * 1103515245u + 12345u;
+            u[q] = (double)((seed >> 8) & 0xFFFFFF) / 16777216.0 - 0.5;
+        }
+        struct contact_geom g = {.delta = 1e-5 * (u[0] + 0.5) + 1e-9,
+                                 .rstar = T1_R * (0.6 + u[1]),
+                                 .mstar = 2e-5 * (0.6 + u[2]),
+                                 .vn = u[3]};
+        g.chi = contact_chi(&law.c, g.rstar);
+        double nl = sqrt(u[4] * u[4] + u[5] * u[5] + u[6] * u[6]) + 1e-12;
+        g.n[0] = u[4] / nl, g.n[1] = u[5] / nl, g.n[2] = u[6] / nl;
+        double vt[3] = {u[7], u[8], u[9]};
+        double vn = vt[0] * g.n[0] + vt[1] * g.n[1] + vt[2] * g.n[2];
+        for (int a = 0; a < 3; a++)
+            g.vt[a] = vt[a] - vn * g.n[a];
+        double h[3] = {u[10] * 1e-6, u[11] * 1e-6, (k % 3 - 1) * 1e-7};
+        if (k % 5 == 0)
+            h[0] = h[1] = h[2] = 0;
+        struct contact_result r1, r2;
+        double h1[3], h2[3];
+        contact_eval(&law, &g, h, 1e-6, h1, &r1);
+        contact_eval_fused(&law, &g, h, 1e-6, h2, &r2);
+        double fs = fabs(r1.fn) + 1e-300;
+        for (int a = 0; a < 3; a++) {
+            assert_true(fabs(r1.f[a] - r2.f[a]) <= 1e-12 * fs);
+            assert_true(fabs(r1.ft[a] - r2.ft[a]) <= 1e-12 * fs);
+            assert_true(fabs(h1[a] - h2[a]) <= 1e-12 * (fabs(h1[a]) + 1e-15));
+        }
+        assert_true(fabs(r1.kn - r2.kn) <= 1e-12 * r1.kn);
+        double ftm = sqrt(r1.ft[0] * r1.ft[0] + r1.ft[1] * r1.ft[1]
+                          + r1.ft[2] * r1.ft[2]);
+        if (ftm >= T1_MU * fabs(r1.fn) * (1 - 1e-9))
+            slid++;
+        else
+            stuck++;
+    }
+    assert_true(slid > 100 && stuck > 100);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -386,6 +443,7 @@ int main(void)
         cmocka_unit_test(test_static_rest),
         cmocka_unit_test(test_stick_slip),
         cmocka_unit_test(test_oblique_impact),
+        cmocka_unit_test(test_fused_equals_generic),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -271,6 +271,20 @@ static void test_forces_vs_brute_force(void **state)
            d.nwall_contacts, nth > 1 ? 2 : 1, err, fscale, terr, tscale);
     assert_true(err <= 1e-12 * fscale);
     assert_true(terr <= 1e-12 * tscale);
+    /* the wall candidate list (Verlet's fast path) gives the same forces */
+    double *acc0 = malloc(6 * d.n * sizeof *acc0);
+    memcpy(acc0, d.acc, 3 * d.n * sizeof *acc0);
+    memcpy(acc0 + 3 * d.n, d.alpha, 3 * d.n * sizeof *acc0);
+    long nwc = d.nwall_contacts;
+    d.use_wlist = 1;
+    assert_int_equal(dem_forces(&d, 0, d.x, d.v, d.w, tau, 0, d.acc, d.alpha),
+                     SIM_OK);
+    assert_int_equal(d.nwall_contacts, nwc);
+    for (size_t k = 0; k < 3 * d.n; k++) {
+        assert_true(acc0[k] == d.acc[k]);
+        assert_true(acc0[3 * d.n + k] == d.alpha[k]);
+    }
+    free(acc0);
     omp_set_num_threads(nth);
     free(f);
     dem_free(&d);
