@@ -6,6 +6,11 @@
  * Why a pidfd: kill(pid, 0) still succeeds for a killed process that its
  * parent has not reaped yet (a zombie), and pids are reused; a pidfd becomes
  * readable the moment the process exits, zombie or not (toolchain.md §4).
+ * Why spin first, and yield while spinning: a sequential coupling step
+ * hands the turn back within microseconds for small frames; a pure spin
+ * would starve a peer that waits for this same core (measured: 77 us per
+ * round trip on one core, 3.4 us with a yield every 32 spins, 1.7 us on two
+ * cores), and a pure sleep costs a futex wake-up (5-7 us) every time.
  * Why a heartbeat thread: the main thread may compute for minutes between
  * messages; the beat shows the program is alive, and its absence shows a
  * program that is stopped (SIGSTOP) or wedged.
