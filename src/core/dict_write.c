@@ -78,13 +78,25 @@ static int put_key(FILE *f, const char *k)
     return (int)quoted_len(k);
 }
 
+/* A word such as "f((x)" whose '(' the lexer left open: a ')' right after
+ * it would be read as part of the word. */
+static int open_word(const struct dict_value *v)
+{
+    if (v->kind != DICT_WORD)
+        return 0;
+    int depth = 0;
+    for (const char *s = v->u.s.text; *s; s++)
+        depth += *s == '(' ? 1 : *s == ')' && depth > 0 ? -1 : 0;
+    return depth > 0;
+}
+
 /* Length of v written on one line, or -1 when it needs a block. */
 static long inline_len(const struct dict_value *v)
 {
     switch ((enum dict_kind)v->kind) {
     case DICT_WORD:
     case DICT_NUMBER:
-        return (long)strlen(v->u.s.text);
+        return (long)strlen(v->u.s.text) + open_word(v);
     case DICT_STRING:
         return quoted_len(v->u.s.text);
     case DICT_DIMS:
@@ -135,8 +147,11 @@ static void put_inline(const struct dict_value *v, FILE *f)
                 fputc(' ', f);
             put_inline(&v->u.l.items[i], f);
         }
-        if (v->kind == DICT_LIST)
+        if (v->kind == DICT_LIST) {
+            if (v->u.l.n && open_word(&v->u.l.items[v->u.l.n - 1]))
+                fputc(' ', f);
             fputc(')', f);
+        }
         break;
     case DICT_DICT:
         break; /* never inline */

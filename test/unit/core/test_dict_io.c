@@ -558,12 +558,15 @@ static void test_write_value(void **state)
 {
     (void)state;
     struct dict *d = parse("a 1; s \"q\\\"\"; l (1 (2 3)); sub { x 1; }"
-                           "m nonuniform List<scalar> 2(1 2);", "w");
-    static const char *const key[] = { "a", "s", "l", "sub", "m" };
+                           "m nonuniform List<scalar> 2(1 2);"
+                           "o (f((x) );", "w");
+    static const char *const key[] = { "a", "s", "l", "sub", "m", "o" };
+    /* "f((x)" keeps a '(' open: the list's ')' must stay apart from it */
     static const char *const want[] = {
         "1", "\"q\\\"\"", "(1 (2 3))",
-        "{\n    x               1;\n}", "nonuniform List<scalar> 2 (1 2)" };
-    for (int i = 0; i < 5; i++) {
+        "{\n    x               1;\n}", "nonuniform List<scalar> 2 (1 2)",
+        "(f((x) )" };
+    for (int i = 0; i < 6; i++) {
         const struct dict_value *v;
         assert_int_equal(dict_get_value(d, key[i], &v), SIM_OK);
         char *buf = NULL;
