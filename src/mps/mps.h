@@ -64,6 +64,8 @@ struct mps_settings {
     double re_n, re_grad, re_lap;   /* radii in units of dp             */
     double gamma;                   /* PPE source mix (eq. 12)          */
     int gradient_pmin;              /* 0: eq. (8); 1: Koshizuka p_min   */
+    int predictor;                  /* PPE at r* = r + dt u* (Koshizuka) */
+    int clip_negative;              /* p < 0 set to 0 after the PPE     */
     double beta, alpha, fs_n_max;   /* eqs. 14, 16 and A0-07 (0.97)     */
     const struct mps_stabiliser_ops *collision; /* "none" by default    */
     double collision_ratio, collision_restitution;
@@ -87,7 +89,8 @@ struct mps_solver {
     struct mps_settings S;
     double dp;
     struct mps_lattice Ln, Lg, Ll;  /* per operator radius               */
-    double re_max;
+    double re_max;                  /* largest operator radius [m]       */
+    double r_list;                  /* neighbour-list radius (+ skin)    */
     double box_lo[3], box_hi[3];    /* particles leaving it are removed  */
     long n_escaped;                 /* removed so far                    */
     int n_fluid0;                   /* fluid particles at start          */
@@ -126,6 +129,14 @@ void mps_particles_free(struct mps_particles *P);
 /* Settings with the documented defaults (Zhang kernel, 2.1/2.1/3.1... see
  * mps_settings.c). */
 void mps_settings_default(struct mps_settings *S);
+
+/* Settings from constant/transportProperties, constant/g (may be NULL:
+ * no gravity), system/mpsSchemes and system/mpsSolution (may be NULL).
+ * Errors cite the file and line. */
+struct dict;
+int mps_settings_read(const struct dict *transport, const struct dict *g,
+                      const struct dict *schemes, const struct dict *solution,
+                      struct mps_settings *S);
 
 /* One step of size dt [s]. Errors: SIM_ERR_SOLVER (PPE not converged),
  * SIM_ERR_NUMERIC (NaN: message names step, particle id and field),

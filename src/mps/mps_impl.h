@@ -12,6 +12,9 @@ int mps_particles_drop_outside(struct mps_solver *s);
  * weights of each operator radius. */
 int mps_neighbours(struct mps_solver *s);
 
+/* Kernel weights of every operator radius from nl.r. */
+void mps_weights(struct mps_solver *s);
+
 /* Assemble and solve the PPE; fills P->p (0 at Dirichlet particles). */
 int mps_ppe_solve(struct mps_solver *s, double dt);
 

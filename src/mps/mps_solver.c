@@ -101,6 +101,10 @@ int mps_solver_init(struct mps_solver *s, struct mps_particles *P,
     TRY(mps_lattice_constants(K, d, dp, S->re_grad * dp, &s->Lg));
     TRY(mps_lattice_constants(K, d, dp, S->re_lap * dp, &s->Ll));
     s->re_max = dp * fmax(S->re_n, fmax(S->re_grad, S->re_lap));
+    /* With the predictor, pairs are re-measured at r* = r + dt u*: a skin
+     * of half a spacing keeps pairs that come into range (a Courant
+     * number below 0.25 moves two particles together by < 0.5 dp). */
+    s->r_list = s->re_max + (S->predictor ? 0.5 * dp : 0.0);
     log_info("MPS lattice (%d-D, dp = %g m, kernel %s):", d, dp, K->name);
     log_info("    number density r_e = %g dp: n0 = %.6f, %d neighbours, "
              "|F0| = %.4f", S->re_n, s->Ln.n0, s->Ln.nnb, s->Ln.f0);
@@ -166,7 +170,7 @@ int mps_neighbours(struct mps_solver *s)
 {
     struct mps_particles *P = &s->P;
     const struct mps_settings *S = &s->S;
-    TRY(cells_build(&s->grid, P->dim, P->x, P->n, s->re_max, s->box_lo,
+    TRY(cells_build(&s->grid, P->dim, P->x, P->n, s->r_list, s->box_lo,
                     s->box_hi));
     if (s->grid.n_outside) {
         int lost = mps_particles_drop_outside(s);
@@ -181,22 +185,28 @@ int mps_neighbours(struct mps_solver *s)
                              "%g): the run is unstable or the tank is open",
                              s->n_escaped, s->n_fluid0,
                              S->max_escape_fraction);
-        TRY(cells_build(&s->grid, P->dim, P->x, P->n, s->re_max, s->box_lo,
+        TRY(cells_build(&s->grid, P->dim, P->x, P->n, s->r_list, s->box_lo,
                         s->box_hi));
     }
     if (S->renumber_interval > 0 && s->step % S->renumber_interval == 0) {
         memcpy(s->perm, s->grid.order, sizeof *s->perm * P->n);
         mps_particles_permute(s, s->perm, P->n);
-        TRY(cells_build(&s->grid, P->dim, P->x, P->n, s->re_max, s->box_lo,
+        TRY(cells_build(&s->grid, P->dim, P->x, P->n, s->r_list, s->box_lo,
                         s->box_hi));
     }
-    TRY(neighbour_build(&s->nl, &s->grid, P->x, s->re_max));
+    TRY(neighbour_build(&s->nl, &s->grid, P->x, s->r_list));
     TRY(grow_weights(s));
+    mps_weights(s);
+    return SIM_OK;
+}
+
+void mps_weights(struct mps_solver *s)
+{
+    const struct mps_settings *S = &s->S;
     const double dp = s->dp;
     S->kernel->weights(s->nl.r, s->nl.nnz, S->re_n * dp, s->w_n);
     if (s->w_g != s->w_n)
         S->kernel->weights(s->nl.r, s->nl.nnz, S->re_grad * dp, s->w_g);
     if (s->w_l != s->w_n && s->w_l != s->w_g)
         S->kernel->weights(s->nl.r, s->nl.nnz, S->re_lap * dp, s->w_l);
-    return SIM_OK;
 }

@@ -4,10 +4,11 @@
  *
  *   1. neighbour search (cells of the largest r_e; CSR list; renumbering)
  *   7. prediction    u* = u^m + dt (nu <lap u^m> + g + f_ext)     eq. (10)
+ *      [optional collision model on u*; optional predictor r* = r + dt u*
+ *      at which the PPE and the gradient are evaluated (Koshizuka 1996)]
  *   8. <n^m> (eq. 7) and free-surface flags (eqs. 14-16)
  *   9. PPE (10)+(12), P = 0 on the free surface               (ppe.c)
  *  10. correction    u^{m+1} = u* - (dt/rho) <grad P^{m+1}>       eq. (8)
- *      [optional collision model]
  *  11. r^{m+1} = r^m + dt u^{m+1}   [optional shifting]
  *
  * Wall and dummy particles keep u = 0 (fixed, no-slip walls, A.9). The
@@ -43,6 +44,32 @@ static void predict(struct mps_solver *s, double dt)
     if (P->dim == 2)
         for (int i = 0; i < P->n; i++)
             s->ustar[3 * i + 2] = 0;
+}
+
+/* Koshizuka and Oka (1996) predictor: move fluid particles to
+ * r* = r + dt u* and re-measure every pair of the list there, so that the
+ * number density of the PPE source sees the compression the explicit step
+ * would cause. */
+static void predict_positions(struct mps_solver *s, double dt, double sign)
+{
+    struct mps_particles *P = &s->P;
+    struct neighbour_list *nl = &s->nl;
+#pragma omp parallel for schedule(static)
+    for (int i = 0; i < P->n; i++)
+        if (P->type[i] == MPS_FLUID)
+            for (int q = 0; q < 3; q++)
+                P->x[3 * i + q] += sign * dt * s->ustar[3 * i + q];
+    if (sign < 0)
+        return;
+#pragma omp parallel for schedule(static)
+    for (int i = 0; i < P->n; i++)
+        for (int64_t k = nl->start[i]; k < nl->start[i + 1]; k++) {
+            const double *a = P->x + 3 * i, *b = P->x + 3 * nl->j[k];
+            nl->r[k] = sqrt((b[0] - a[0]) * (b[0] - a[0])
+                            + (b[1] - a[1]) * (b[1] - a[1])
+                            + (b[2] - a[2]) * (b[2] - a[2]));
+        }
+    mps_weights(s);
 }
 
 static void density(struct mps_solver *s)
@@ -91,13 +118,20 @@ int mps_step(struct mps_solver *s, double dt)
     TRY(mps_neighbours(s));
     double t1 = omp_get_wtime();
     predict(s, dt);
+    TRY(s->S.collision->apply(s, dt));
+    if (s->S.predictor)
+        predict_positions(s, dt, 1.0);
     density(s);
     double t2 = omp_get_wtime();
     TRY(mps_ppe_solve(s, dt));
     double t3 = omp_get_wtime();
+    if (s->S.clip_negative)
+        for (int i = 0; i < s->P.n; i++)
+            s->P.p[i] = fmax(s->P.p[i], 0.0);
     mps_dummy_pressure(s);
     correct(s, dt);
-    TRY(s->S.collision->apply(s, dt));
+    if (s->S.predictor)
+        predict_positions(s, dt, -1.0);   /* back to r^m, then r^m + dt u */
     move(s, dt);
     TRY(s->S.shifting->apply(s, dt));
     double t4 = omp_get_wtime();

@@ -1,7 +1,9 @@
 /*
  * collision_lee2011.c — the MPS collision model of Lee et al. (2011), after
- * Koshizuka's original: fluid particles closer than alpha_c dp that approach
- * each other exchange the normal part of their relative velocity as in an
+ * Koshizuka's original, applied to the predicted velocity u* before the
+ * pressure equation (as in the reference code of Koshizuka et al. 2018,
+ * so that the PPE does not see the approach as a huge divergence): fluid
+ * particles closer than alpha_c dp that approach each other exchange the normal part of their relative velocity as in an
  * inelastic collision of equal masses,
  *
  *     du_i = -(1 + e)/2 ((u_i - u_j).n_ij) n_ij   if (u_i - u_j).n_ij > 0,
@@ -29,7 +31,8 @@ static int apply_collision(struct mps_solver *s, double dt)
     const struct neighbour_list *nl = &s->nl;
     const double rc = s->S.collision_ratio * s->dp;
     const double e = s->S.collision_restitution;
-    double *du = s->grad; /* free after the correction */
+    double *du = s->grad; /* free before the correction */
+    double *u = s->ustar;
 #pragma omp parallel for schedule(static)
     for (int i = 0; i < P->n; i++) {
         double d[3] = { 0, 0, 0 };
@@ -42,7 +45,7 @@ static int apply_collision(struct mps_solver *s, double dt)
                 double n[3], vn = 0;
                 for (int q = 0; q < 3; q++) {
                     n[q] = (P->x[3 * j + q] - P->x[3 * i + q]) / r;
-                    vn += (P->u[3 * i + q] - P->u[3 * j + q]) * n[q];
+                    vn += (u[3 * i + q] - u[3 * j + q]) * n[q];
                 }
                 if (vn <= 0)
                     continue;
@@ -58,7 +61,7 @@ static int apply_collision(struct mps_solver *s, double dt)
     for (int i = 0; i < P->n; i++)
         if (P->type[i] == MPS_FLUID)
             for (int q = 0; q < 3; q++)
-                P->u[3 * i + q] += du[3 * i + q];
+                u[3 * i + q] += du[3 * i + q];
     return SIM_OK;
 }
 

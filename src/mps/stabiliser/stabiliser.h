@@ -3,9 +3,9 @@
  * paper's method (METHODS.md A.10 [P]): off by default and named in
  * system/mpsSchemes (`collision none;`, `shifting none;`).
  *
- * apply(s, dt) is called once per step: collision after the pressure
- * correction (it changes velocities), shifting after the position update
- * (it moves positions, neighbour list of the step still valid). A non-zero
+ * apply(s, dt) is called once per step: collision on the predicted
+ * velocity u* before the pressure equation, shifting after the position
+ * update (it moves positions; the neighbour list of the step is reused). A non-zero
  * return is an error code.
  */
 #ifndef MPSDEM_MPS_STABILISER_H

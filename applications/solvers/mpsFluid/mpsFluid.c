@@ -1,0 +1,332 @@
+/*
+ * mpsFluid — incompressible MPS solver for free-surface flows (Xie et al.
+ * 2025 with eps = 1; METHODS.md A.2-A.5, A.9, A.10; DESIGN.md §5).
+ *
+ * Reads   system/controlDict, system/mpsSchemes, system/mpsSolution,
+ *         constant/transportProperties, constant/g, constant/particlePatches
+ *         (from genParticles: patch names, dimension, dp),
+ *         <startTime>/fluid.vtu
+ * Writes  <time>/fluid.vtu, fluid.pvd, postProcessing/<functionObject>/,
+ *         postProcessing/usedParameters
+ *
+ * Every key: mpsFluid.reference beside this file.
+ */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include "core/app.h"
+#include "core/dict.h"
+#include "core/error.h"
+#include "core/log.h"
+#include "core/time.h"
+#include "functionObjects/functionObject.h"
+#include "io/vtu.h"
+#include "mps/functionObjects/mps_functionObjects.h"
+#include "mps/mps.h"
+
+#define MAX_PATCHES 64
+
+struct fluid {
+    struct app app;
+    struct dict *control, *transport, *gravity, *schemes, *solution, *patches;
+    struct run_time rt;
+    struct mps_solver s;
+    int dim;
+    double dp;
+    int npatches;
+    const char *patch_names[MAX_PATCHES];
+    char value_names[MAX_PATCHES + 2][80];
+    struct fo_value values[MAX_PATCHES + 2];
+    double force[3 * MAX_PATCHES];
+    struct fo_list *fos;
+    struct fo_scene scene;
+    struct vtu_cloud cloud;
+    struct vtu_field fields[8];
+};
+
+static int create_time(struct fluid *f)
+{
+    TRY(app_read_dict(&f->app, "system/controlDict", &f->control));
+    return time_read(f->control, f->app.case_abs, &f->rt);
+}
+
+/* constant/particlePatches: patch names, dimension and dp of the lattice. */
+static int read_patches(struct fluid *f)
+{
+    const struct dict_value *list;
+    long dim;
+    TRY(app_read_dict(&f->app, "constant/particlePatches", &f->patches));
+    TRY(dict_get_list(f->patches, "patches", &list));
+    f->npatches = dict_value_len(list);
+    if (f->npatches > MAX_PATCHES)
+        return dict_error(f->patches, "patches", SIM_ERR_DICT, "more than "
+                          "%d patches", MAX_PATCHES);
+    for (int k = 0; k < f->npatches; k++)
+        TRY(dict_value_get_word(dict_value_at(list, k), &f->patch_names[k]));
+    TRY(dict_get_label(f->patches, "dimension", &dim));
+    if (dim != 2 && dim != 3)
+        return dict_error(f->patches, "dimension", SIM_ERR_DICT,
+                          "dimension must be 2 or 3");
+    f->dim = (int)dim;
+    TRY(dict_get_scalar(f->patches, "dp", &f->dp));
+    if (!(f->dp > 0))
+        return dict_error(f->patches, "dp", SIM_ERR_DICT, "dp must be > 0");
+    dict_mark_used(f->patches, "types");
+    dict_mark_used(f->patches, "wallLayers");
+    return SIM_OK;
+}
+
+static int copy_cloud(struct fluid *f, const struct vtu_cloud *c,
+                      const char *path, struct mps_particles *P)
+{
+    const struct vtu_field *ty, *pa, *ve, *pr, *no, *id;
+    TRY(vtu_require(c, path, "type", VTU_INT32, 1, &ty));
+    TRY(vtu_require(c, path, "patch", VTU_INT32, 1, &pa));
+    TRY(vtu_require(c, path, "velocity", VTU_FLOAT64, 3, &ve));
+    TRY(vtu_require(c, path, "pressure", VTU_FLOAT64, 1, &pr));
+    TRY(vtu_require(c, path, "normal", VTU_FLOAT64, 3, &no));
+    id = vtu_find(c, "id");
+    if (id && (id->type != VTU_INT64 || id->ncomp != 1))
+        return sim_error(SIM_ERR_INPUT, "%s: field 'id' must be Int64", path);
+    if (c->n > 2000000000)
+        return sim_error(SIM_ERR_INPUT, "%s: too many particles", path);
+    int n = (int)c->n;
+    TRY(mps_particles_alloc(P, n, f->dim));
+    memcpy(P->x, c->points, sizeof *P->x * 3 * n);
+    memcpy(P->u, ve->data, sizeof *P->u * 3 * n);
+    memcpy(P->p, pr->data, sizeof *P->p * n);
+    memcpy(P->normal, no->data, sizeof *P->normal * 3 * n);
+    memcpy(P->type, ty->data, sizeof *P->type * n);
+    memcpy(P->patch, pa->data, sizeof *P->patch * n);
+    if (id)
+        memcpy(P->id, id->data, sizeof *P->id * n);
+    for (int i = 0; i < n; i++) {
+        if (P->type[i] < 0 || P->type[i] > 2)
+            return sim_error(SIM_ERR_INPUT, "%s: particle %d has type %d "
+                             "(0 fluid, 1 wall, 2 dummy)", path, i,
+                             P->type[i]);
+        if (P->patch[i] >= f->npatches)
+            return sim_error(SIM_ERR_INPUT, "%s: particle %d has patch %d "
+                             "but constant/particlePatches lists %d", path,
+                             i, P->patch[i], f->npatches);
+        if (f->dim == 2 && P->x[3 * i + 2] != 0)
+            return sim_error(SIM_ERR_INPUT, "%s: 2-D case but particle %d "
+                             "has z = %g", path, i, P->x[3 * i + 2]);
+        for (int q = 0; q < 3; q++)
+            if (!isfinite(P->x[3 * i + q]) || !isfinite(P->u[3 * i + q]))
+                return sim_error(SIM_ERR_INPUT, "%s: particle %d has a "
+                                 "non-finite position or velocity", path, i);
+    }
+    return SIM_OK;
+}
+
+static int create_fluid(struct fluid *f)
+{
+    char rel[256], path[4400];
+    struct mps_settings S;
+    struct mps_particles P;
+    struct vtu_cloud c = { 0 };
+    struct linsolve *ls = NULL;
+    const struct dict *ppe;
+    int rc;
+
+    TRY(read_patches(f));
+    TRY(app_read_dict(&f->app, "constant/transportProperties", &f->transport));
+    TRY(app_read_dict(&f->app, "constant/g", &f->gravity));
+    TRY(app_read_dict(&f->app, "system/mpsSchemes", &f->schemes));
+    TRY(app_read_dict(&f->app, "system/mpsSolution", &f->solution));
+    TRY(mps_settings_read(f->transport, f->gravity, f->schemes, f->solution,
+                          &S));
+    if (f->dim == 2 && S.g[2] != 0)
+        return dict_error(f->gravity, dict_has(f->gravity, "value") ? "value"
+                          : "g", SIM_ERR_DICT, "2-D case: gravity must lie "
+                          "in the x-y plane, e.g. (0 -9.81 0)");
+    TRY(dict_get_dict(f->solution, "PPE", &ppe));
+    TRY(linsolve_create(ppe, &ls));
+    snprintf(rel, sizeof rel, "%s/fluid.vtu", f->rt.name);
+    app_path(&f->app, rel, path, sizeof path);
+    rc = vtu_read(path, &c);
+    if (!rc)
+        rc = copy_cloud(f, &c, path, &P);
+    vtu_cloud_free(&c);
+    if (rc) {
+        linsolve_free(ls);
+        return rc;
+    }
+    log_info("Fluid cloud %s: %d particles, %d-D, dp = %g m", rel, P.n,
+             f->dim, f->dp);
+    TRY(mps_solver_init(&f->s, &P, &S, f->dp, ls));
+    return mps_check_setup(&f->s, f->rt.delta_t, f->rt.adjust,
+                           f->rt.adjust ? f->rt.max_co : 0.2);
+}
+
+static void refresh_scene(struct fluid *f)
+{
+    struct mps_particles *P = &f->s.P;
+    struct vtu_field fl[8] = {
+        { "type", VTU_INT32, 1, P->type },
+        { "patch", VTU_INT32, 1, P->patch },
+        { "velocity", VTU_FLOAT64, 3, P->u },
+        { "pressure", VTU_FLOAT64, 1, P->p },
+        { "normal", VTU_FLOAT64, 3, P->normal },
+        { "id", VTU_INT64, 1, P->id },
+        { "numberDensity", VTU_FLOAT64, 1, P->nd },
+        { "freeSurface", VTU_UINT8, 1, P->fs },
+    };
+    memcpy(f->fields, fl, sizeof fl);
+    f->cloud = (struct vtu_cloud){ .n = (size_t)P->n, .points = P->x,
+                                   .nfields = 8, .fields = f->fields,
+                                   .time = f->rt.value };
+    mps_wall_forces(&f->s, f->npatches, f->force);
+    int nv = 0;
+    for (int k = 0; k < f->npatches; k++, nv++) {
+        snprintf(f->value_names[nv], sizeof f->value_names[nv],
+                 "wallForce.%s", f->patch_names[k]);
+        f->values[nv] = (struct fo_value){ .name = f->value_names[nv],
+                                           .ncomp = 3 };
+        memcpy(f->values[nv].v, f->force + 3 * k, 3 * sizeof(double));
+    }
+    f->values[nv++] = (struct fo_value){ .name = "escaped", .ncomp = 1,
+                                         .v = { (double)f->s.n_escaped } };
+    f->values[nv++] = (struct fo_value){ .name = "n0", .ncomp = 1,
+                                         .v = { f->s.Ln.n0 } };
+    f->scene = (struct fo_scene){
+        .time = f->rt.value, .dt = f->rt.dt, .step = f->rt.step,
+        .dim = f->dim, .cloud_name = "fluid", .cloud = &f->cloud,
+        .spacing = f->dp, .patch_names = f->patch_names,
+        .npatches = f->npatches, .values = f->values, .nvalues = nv,
+        .solver = &f->s };
+}
+
+static int create_functions(struct fluid *f)
+{
+    static const struct fo_ops *const *const tables[] = {
+        fo_generic_table, mps_fo_table, NULL };
+    refresh_scene(f);
+    return fo_list_create(f->rt.functions, tables, &f->scene,
+                          f->app.case_abs, f->rt.start_time, f->rt.precision,
+                          &f->fos);
+}
+
+static int write_fields(struct fluid *f)
+{
+    char dir[4200], path[4400], pvd[4200], rel[256];
+    refresh_scene(f);
+    TRY(time_make_dir(&f->rt, f->app.case_abs, dir, sizeof dir));
+    snprintf(path, sizeof path, "%s/fluid.vtu", dir);
+    TRY(vtu_write(path, &f->cloud, f->rt.binary));
+    snprintf(rel, sizeof rel, "%s/fluid.vtu", f->rt.name);
+    return pvd_add(app_path(&f->app, "fluid.pvd", pvd, sizeof pvd),
+                   f->rt.value, rel);
+}
+
+static int start_output(struct fluid *f)
+{
+    char pvd[4200], rel[256], used[4200];
+    app_path(&f->app, "fluid.pvd", pvd, sizeof pvd);
+    if (access(pvd, F_OK) == 0)
+        TRY(pvd_truncate(pvd, f->rt.value));
+    snprintf(rel, sizeof rel, "%s/fluid.vtu", f->rt.name);
+    TRY(pvd_add(pvd, f->rt.value, rel));
+    app_path(&f->app, "postProcessing", used, sizeof used);
+    if (access(used, F_OK) != 0 && mkdir(used, 0777) != 0)
+        return sim_error(SIM_ERR_IO, "%s: cannot create", used);
+    app_path(&f->app, "postProcessing/usedParameters", used, sizeof used);
+    return params_write(used, 1);
+}
+
+/* A failed step (PPE not converged, NaN, too many escapes): keep the state
+ * reached for inspection, then let main stop. */
+static int failed(struct fluid *f, int rc)
+{
+    char msg[1024];
+    snprintf(msg, sizeof msg, "%s", sim_error_message());
+    if (write_fields(f) == SIM_OK)
+        log_info("State at the failure written to %s/fluid.vtu", f->rt.name);
+    return sim_error(rc, "%s", msg);
+}
+
+static int step(struct fluid *f)
+{
+    struct mps_solver *s = &f->s;
+    double dt = f->rt.adjust ? mps_propose_dt(s, f->rt.max_co) : f->rt.delta_t;
+    time_set_step(&f->rt, dt);
+    int rc = mps_step(s, f->rt.dt);
+    time_increment(&f->rt);
+    if (rc)
+        return failed(f, rc);
+    refresh_scene(f);
+    TRY(fo_list_execute(f->fos, &f->scene, f->rt.write_now));
+    if (f->rt.write_now) {
+        TRY(write_fields(f));
+        app_log_times(&f->app);
+    }
+    char extra[256];
+    snprintf(extra, sizeof extra, "PPE: %d iterations, residual %.3g  "
+             "particles %d  escaped %ld", s->last.iters, s->last.res_rel,
+             s->P.n, s->n_escaped);
+    time_log_progress(&f->rt, extra);
+    return SIM_OK;
+}
+
+static void final_stats(const struct fluid *f)
+{
+    const struct mps_timers *t = &f->s.t;
+    double ps = (double)f->s.P.n * (double)(t->steps ? t->steps : 1);
+    double wall = app_wall_time() - f->app.wall0;
+    double sum = t->neighbours + t->explicit_ + t->assembly + t->ppe
+               + t->correction;
+    log_info("\nMPS statistics");
+    log_info("    steps                 %ld", t->steps);
+    log_info("    particles             %d (escaped %ld)", f->s.P.n,
+             f->s.n_escaped);
+    log_info("    PPE iterations        %ld (%.1f per step)", t->ppe_iters,
+             t->steps ? (double)t->ppe_iters / t->steps : 0.0);
+    log_info("    time per particle-step [us]: neighbours %.3f  explicit "
+             "%.3f  assembly %.3f  PPE %.3f  correction %.3f  total %.3f",
+             1e6 * t->neighbours / ps, 1e6 * t->explicit_ / ps,
+             1e6 * t->assembly / ps, 1e6 * t->ppe / ps,
+             1e6 * t->correction / ps, 1e6 * sum / ps);
+    log_info("    particle-steps/s      %.4g (wall clock of the run %.3g s)",
+             wall > 0 ? ps / wall : 0.0, wall);
+}
+
+static void cleanup(struct fluid *f)
+{
+    fo_list_free(f->fos);
+    mps_solver_free(&f->s);
+    dict_free(f->control);
+    dict_free(f->transport);
+    dict_free(f->gravity);
+    dict_free(f->schemes);
+    dict_free(f->solution);
+    dict_free(f->patches);
+}
+
+int main(int argc, char **argv)
+{
+    static struct fluid f;
+    int rc;
+
+    app_init(&f.app, "mpsFluid", "incompressible MPS solver for free-surface "
+             "flows", argc, argv, NULL, 0);
+    if ((rc = create_time(&f)) || (rc = create_fluid(&f))
+        || (rc = create_functions(&f)) || (rc = start_output(&f)))
+        app_fatal(&f.app, rc);
+    dict_mark_used(f.control, "application");
+    dict_warn_unused(f.control);
+    dict_warn_unused(f.schemes);
+    dict_warn_unused(f.solution);
+    dict_warn_unused(f.transport);
+    log_info("\nStarting time loop\n");
+    while (time_running(&f.rt))
+        if ((rc = step(&f)))
+            app_fatal(&f.app, rc);
+    final_stats(&f);
+    cleanup(&f);
+    return app_end(&f.app);
+}

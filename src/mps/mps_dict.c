@@ -1,0 +1,154 @@
+/*
+ * mps_dict.c — MPS settings from the case dictionaries (keys documented in
+ * applications/solvers/mpsFluid/mpsFluid.reference):
+ *
+ *   constant/transportProperties  rho [kg/m^3], nu [m^2/s]
+ *   constant/g                    value (gx gy gz) [m/s^2] (or g (...))
+ *   system/mpsSchemes             kernel, reNumberDensity, reGradient,
+ *                                 reLaplacian [dp], pressureGradient,
+ *                                 sourceMix (gamma), freeSurface {...},
+ *                                 collision, shifting (+ <name>Coeffs),
+ *                                 dummyPressure, renumberInterval
+ *   system/mpsSolution            maxEscapeFraction (PPE {...} is read by
+ *                                 linsolve_create)
+ */
+#include <string.h>
+
+#include "core/dict.h"
+#include "core/error.h"
+#include "core/select.h"
+#include "mps/kernel/kernel.h"
+#include "mps/mps.h"
+#include "mps/stabiliser/stabiliser.h"
+
+static const int DIM_RHO[7] = { 1, -3, 0, 0, 0, 0, 0 };
+static const int DIM_NU[7] = { 0, 2, -1, 0, 0, 0, 0 };
+
+static int positive(const struct dict *d, const char *key, double v, double lo,
+                    double hi)
+{
+    if (!(v > lo) || !(v <= hi))
+        return dict_error(d, key, SIM_ERR_DICT, "%s = %g is out of range "
+                          "(%g, %g]", key, v, lo, hi);
+    return SIM_OK;
+}
+
+static int read_physics(const struct dict *tp, const struct dict *gd,
+                        struct mps_settings *S)
+{
+    TRY(dict_get_scalar_dim(tp, "rho", DIM_RHO, &S->rho));
+    TRY(positive(tp, "rho", S->rho, 0, 1e6));
+    TRY(dict_get_scalar_dim(tp, "nu", DIM_NU, &S->nu));
+    TRY(positive(tp, "nu", S->nu, 0, 1e3));
+    if (gd) {
+        const char *key = dict_has(gd, "value") ? "value" : "g";
+        TRY(dict_get_vector(gd, key, 3, S->g));
+        if (dict_has(gd, "dimensions"))
+            dict_mark_used(gd, "dimensions");
+    }
+    return SIM_OK;
+}
+
+static int read_radii(const struct dict *d, struct mps_settings *S)
+{
+    TRY(dict_get_scalar_or(d, "reNumberDensity", 2.1, &S->re_n));
+    TRY(dict_get_scalar_or(d, "reGradient", S->re_n, &S->re_grad));
+    TRY(dict_get_scalar_or(d, "reLaplacian", 3.1, &S->re_lap));
+    TRY(positive(d, "reNumberDensity", S->re_n, 1.0, 10.0));
+    TRY(positive(d, "reGradient", S->re_grad, 1.0, 10.0));
+    TRY(positive(d, "reLaplacian", S->re_lap, 1.0, 10.0));
+    return SIM_OK;
+}
+
+static int read_free_surface(const struct dict *d, struct mps_settings *S)
+{
+    const struct dict *fs;
+    TRY(dict_find_dict(d, "freeSurface", &fs));
+    if (!fs)
+        return SIM_OK;
+    TRY(dict_get_scalar_or(fs, "beta", S->beta, &S->beta));
+    TRY(positive(fs, "beta", S->beta, 0, 1));
+    TRY(dict_get_scalar_or(fs, "alpha", S->alpha, &S->alpha));
+    TRY(positive(fs, "alpha", S->alpha, 0, 2));
+    TRY(dict_get_scalar_or(fs, "vectorDensityLimit", S->fs_n_max,
+                           &S->fs_n_max));
+    TRY(positive(fs, "vectorDensityLimit", S->fs_n_max, 0, 2));
+    return SIM_OK;
+}
+
+static int read_stabilisers(const struct dict *d, struct mps_settings *S)
+{
+    const void *m;
+    const struct dict *c;
+    TRY(model_select(d, "collision", "collision model",
+                     (const void *const *)mps_collision_table, "none", &m));
+    S->collision = m;
+    TRY(dict_find_dict(d, "lee2011Coeffs", &c));
+    if (c) {
+        TRY(dict_get_scalar_or(c, "distance", S->collision_ratio,
+                               &S->collision_ratio));
+        TRY(positive(c, "distance", S->collision_ratio, 0, 1));
+        TRY(dict_get_scalar_or(c, "restitution", S->collision_restitution,
+                               &S->collision_restitution));
+        TRY(positive(c, "restitution", S->collision_restitution + 1, 0, 2));
+    }
+    TRY(model_select(d, "shifting", "particle shifting",
+                     (const void *const *)mps_shifting_table, "none", &m));
+    S->shifting = m;
+    TRY(dict_find_dict(d, "xu2009Coeffs", &c));
+    if (c) {
+        TRY(dict_get_scalar_or(c, "coefficient", S->shifting_coeff,
+                               &S->shifting_coeff));
+        TRY(positive(c, "coefficient", S->shifting_coeff, 0, 1));
+    }
+    return SIM_OK;
+}
+
+static int read_schemes(const struct dict *d, struct mps_settings *S)
+{
+    const void *k;
+    static const char *const grads[] = { "symmetric", "minimum", NULL };
+    static const char *const dummies[] = { "nearestWall", "zero", NULL };
+    int idx;
+    TRY(model_select(d, "kernel", "MPS kernel",
+                     (const void *const *)mps_kernel_table, "zhang2014", &k));
+    S->kernel = k;
+    TRY(read_radii(d, S));
+    TRY(dict_get_word_or(d, "pressureGradient", grads, 0, &idx));
+    S->gradient_pmin = idx == 1;
+    TRY(dict_get_bool_or(d, "predictor", S->predictor, &S->predictor));
+    TRY(dict_get_bool_or(d, "clipNegativePressure", S->clip_negative,
+                         &S->clip_negative));
+    TRY(dict_get_scalar_or(d, "sourceMix", S->gamma, &S->gamma));
+    if (!(S->gamma >= 0 && S->gamma <= 1))
+        return dict_error(d, "sourceMix", SIM_ERR_DICT, "sourceMix (gamma "
+                          "of eq. 12) must lie in [0, 1], not %g", S->gamma);
+    TRY(read_free_surface(d, S));
+    TRY(read_stabilisers(d, S));
+    TRY(dict_get_word_or(d, "dummyPressure", dummies, 0, &idx));
+    S->dummy_pressure_zero = idx == 1;
+    long r;
+    TRY(dict_get_label_or(d, "renumberInterval", S->renumber_interval, &r));
+    if (r < 0 || r > 1000000)
+        return dict_error(d, "renumberInterval", SIM_ERR_DICT,
+                          "renumberInterval must be >= 0 (0 = never)");
+    S->renumber_interval = (int)r;
+    return SIM_OK;
+}
+
+int mps_settings_read(const struct dict *transport, const struct dict *g,
+                      const struct dict *schemes, const struct dict *solution,
+                      struct mps_settings *S)
+{
+    mps_settings_default(S);
+    TRY(read_physics(transport, g, S));
+    TRY(read_schemes(schemes, S));
+    if (solution) {
+        TRY(dict_get_scalar_or(solution, "maxEscapeFraction",
+                               S->max_escape_fraction,
+                               &S->max_escape_fraction));
+        TRY(positive(solution, "maxEscapeFraction", S->max_escape_fraction,
+                     0, 1));
+    }
+    return SIM_OK;
+}
