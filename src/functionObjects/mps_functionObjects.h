@@ -1,0 +1,101 @@
+/*
+ * mps_functionObjects.h — function objects of the MPS fluid (STYLE.md C14),
+ * passed by mpsFluid to fo_list_create() beside fo_generic_table:
+ *
+ *     const struct fo_ops *const *const tables[] =
+ *         { fo_generic_table, mps_fo_table, NULL };
+ *
+ *   probes      pressure at points (Shepard average or nearest wall
+ *               particle, METHODS.md A.9)                 fo_probes.c
+ *   waveGauges  free-surface elevation in vertical columns (A.12.3)
+ *                                                         fo_waveGauges.c
+ *   front       leading edge of the fluid along a direction (A.12.2),
+ *               optionally Martin & Moyce's Z and T        fo_front.c
+ *   forces      pressure force on named wall patches (A.9) fo_forces.c
+ *   volume      fluid particle count, volume, relative change, escaped
+ *                                                         fo_volume.c
+ *
+ * Keys and columns of each type: doc/controlDict.md and each file's header.
+ *
+ * ---- Contract: what the solver publishes in struct fo_scene -------------
+ *
+ * scene->cloud has the positions (x y z; z = 0 in 2-D) and these point
+ * fields, by name (type, components):
+ *
+ *   type           Int32   x1  0 fluid, 1 wall (in the PPE), 2 dummy
+ *   patch          Int32   x1  -1 fluid, else the wall patch index k;
+ *                              its name is scene->patch_names[k]
+ *   pressure       Float64 x1  [Pa]; dummies carry a copy (not used here)
+ *   velocity       Float64 x3  [m/s]
+ *   normal         Float64 x3  wall/dummy unit normal from the fluid into
+ *                              the solid (a floor has (0 -1 0) in 2-D)
+ *   numberDensity  Float64 x1  n_i/n0, with the number-density radius
+ *   freeSurface    UInt8   x1  0 inner, 1 surface (2 dry wall)
+ *   id             Int64   x1  persistent particle id
+ *
+ * scene->spacing = dp [m]; scene->dim = 2 (x-y plane, vertical y) or 3
+ * (vertical z); scene->patch_names/npatches name the wall patches;
+ * scene->values may hold "escaped" (1 component: particles removed so far).
+ *
+ * Each type checks the fields it uses at create time (a missing or
+ * mistyped field is an error naming it) and looks them up again at every
+ * execution: the solver's arrays may move between steps (renumbering,
+ * reallocation), so no data pointer is kept across calls. Particle
+ * indices are never kept either; `id` is the stable identity.
+ */
+#ifndef MPSDEM_FUNCTIONOBJECTS_MPS_FUNCTIONOBJECTS_H
+#define MPSDEM_FUNCTIONOBJECTS_MPS_FUNCTIONOBJECTS_H
+
+#include <stdint.h>
+
+#include "functionObjects/functionObject.h"
+
+struct dict;
+
+extern const struct fo_ops *const mps_fo_table[];
+
+/* ---- helpers shared by the MPS function objects (mps_functionObjects.c) */
+
+/* Fields of the contract, as bits for mps_fo_fields_get(). */
+enum {
+    MPS_FO_TYPE = 1u << 0,
+    MPS_FO_PATCH = 1u << 1,
+    MPS_FO_PRESSURE = 1u << 2,
+    MPS_FO_VELOCITY = 1u << 3,
+    MPS_FO_NORMAL = 1u << 4,
+    MPS_FO_ND = 1u << 5,
+    MPS_FO_FS = 1u << 6,
+    MPS_FO_ID = 1u << 7,
+};
+
+/* Borrowed views of the scene's arrays, valid during one call only. */
+struct mps_fo_fields {
+    size_t n;
+    const double *x;       /* 3n positions              */
+    const int32_t *type, *patch;
+    const double *p, *u, *normal, *nd;
+    const uint8_t *fs;
+    const int64_t *id;
+};
+
+/* Fill f with the fields named in `mask` (others NULL) after checking type
+ * and components; `who` (the function object's dictionary) is named in the
+ * error, which is SIM_ERR_INPUT. Also checks dim (2 or 3) and spacing. */
+int mps_fo_fields_get(const struct dict *who, const struct fo_scene *s,
+                      unsigned mask, struct mps_fo_fields *f);
+
+/* Index of the vertical axis: 1 in 2-D, 2 in 3-D. */
+int mps_fo_vertical(int dim);
+
+/* Read the list `key` of points "((a b ...) ...)" (at least one). Each
+ * point has between nmin and nmax numbers; they are stored in 3 slots per
+ * point, missing ones zero. *pts is allocated (free it). Errors are
+ * SIM_ERR_DICT located at the offending item. */
+int mps_fo_read_points(const struct dict *d, const char *key, int nmin,
+                       int nmax, double **pts, int *n);
+
+/* Value `name` published by the solver, or NULL. */
+const struct fo_value *mps_fo_value(const struct fo_scene *s,
+                                    const char *name);
+
+#endif
