@@ -25,7 +25,7 @@
  * the case puts the floor's surface at z = 0.
  *
  * Keys:
- *   gaugeLocations   ((x y) ...);   // [m]; 2-D: (x) or (x 0)
+ *   gaugeLocations   ((x y) ...);   // [m]; 2-D: (x) or (x 0), or (x0 x1 ...)
  *   halfWidth        1;             // b in units of dp
  *   minNumberDensity 0.5;           // n/n0 threshold for fluid particles
  * Columns: time, eta of each gauge [m].

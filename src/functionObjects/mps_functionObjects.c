@@ -90,6 +90,12 @@ int mps_fo_vertical(int dim) { return dim == 2 ? 1 : 2; }
 static int read_point(const struct dict_value *v, const char *key, int k,
                       int nmin, int nmax, double *out)
 {
+    if (nmin == 1 && dict_value_kind(v) == DICT_NUMBER) {
+        /* a bare coordinate, e.g. 2-D gauges "(0.5 1.2)" */
+        out[0] = dict_value_number(v);
+        out[1] = out[2] = 0;
+        return SIM_OK;
+    }
     int len = dict_value_kind(v) == DICT_LIST ? dict_value_len(v) : -1;
     if (len < nmin || len > nmax) {
         if (nmin == nmax)

@@ -89,7 +89,8 @@ int mps_fo_vertical(int dim);
 
 /* Read the list `key` of points "((a b ...) ...)" (at least one). Each
  * point has between nmin and nmax numbers; they are stored in 3 slots per
- * point, missing ones zero. *pts is allocated (free it). Errors are
+ * point, missing ones zero. With nmin = 1 an item may also be a bare
+ * number, "(x0 x1 ...)". *pts is allocated (free it). Errors are
  * SIM_ERR_DICT located at the offending item. */
 int mps_fo_read_points(const struct dict *d, const char *key, int nmin,
                        int nmax, double **pts, int *n);

@@ -361,7 +361,7 @@ static void test_wave_gauges(void **state)
              "functions {\n"
              "  g1 { type waveGauges; gaugeLocations ((%.17g) (%.17g 0) "
              "(%.17g) (%.17g) (%.17g) (%.17g) (1)); }\n"
-             "  g2 { type waveGauges; gaugeLocations ((%.17g) (%.17g)); "
+             "  g2 { type waveGauges; gaugeLocations (%.17g %.17g); "
              "halfWidth 2; minNumberDensity 0.05; }\n"
              "}\n",
              3.5 * DP, 6.5 * DP, 5.5 * DP, (W + 2.5) * DP, (W + 4.5) * DP,
@@ -634,6 +634,10 @@ static const struct bad_case bad[] = {
     {2, "a { type probes; probeLocations ((1 2)); radius -1; }", "radius"},
     {2, "a { type waveGauges; gaugeLocations ((0.1 0.2)); }",
      "(x) or (x 0)"},
+    {2, "a { type waveGauges; gaugeLocations (0.1 word); }",
+     "point 1 must be a list of 1 to 2 numbers"},
+    {3, "a { type waveGauges; gaugeLocations (0.1 0.2); }",
+     "point 0 must be a list of 2 numbers"},
     {3, "a { type waveGauges; gaugeLocations ((0.1)); }",
      "point 0 must be a list of 2 numbers"},
     {2, "a { type waveGauges; gaugeLocations ((0.1)); halfWidth 0; }",
