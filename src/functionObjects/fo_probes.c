@@ -27,7 +27,7 @@
  * tank) writes nan and warns once.
  *
  * Keys:
- *   probeLocations ((x y z) ...);   // [m]; in 2-D (x y) or (x y 0): z is ignored
+ *   probeLocations ((x y z) ...);   // [m]; 2-D: (x y) or (x y 0)
  *   interpolation  shepard;         // shepard | nearestWall
  *   radius         2.1;             // reach R in units of dp
  * Columns: time, p of each probe [Pa].
@@ -69,9 +69,11 @@ static int read_keys(const struct dict *d, const struct fo_scene *s,
     double r;
     TRY(mps_fo_read_points(d, "probeLocations", s->dim == 2 ? 2 : 3, 3,
                            &p->pt, &p->n));
-    if (s->dim == 2)
-        for (int k = 0; k < p->n; k++)
-            p->pt[3 * k + 2] = 0;
+    for (int k = 0; k < p->n && s->dim == 2; k++)
+        if (p->pt[3 * k + 2] != 0)
+            return dict_error(d, "probeLocations", SIM_ERR_DICT, "probe %d: "
+                              "a 2-D case lies in the plane z = 0; got z = "
+                              "%g", k, p->pt[3 * k + 2]);
     TRY(dict_get_word_or(d, "interpolation", interp_words, SHEPARD,
                          &p->interp));
     TRY(dict_get_scalar_or(d, "radius", 2.1, &r));

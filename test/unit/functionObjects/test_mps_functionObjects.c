@@ -629,6 +629,8 @@ static const struct bad_case bad[] = {
     {3, "a { type probes; probeLocations ((1 2 3) (1 2)); }",
      "point 1 must be a list of 3 numbers"},
     {2, "a { type probes; probeLocations ((1 a)); }", "number"},
+    {2, "a { type probes; probeLocations ((1 2 0) (1 2 3)); }",
+     "probe 1: a 2-D case lies in the plane z = 0"},
     {2, "a { type probes; probeLocations ((1 2)); interpolation linear; }",
      "nearestWall"},
     {2, "a { type probes; probeLocations ((1 2)); radius -1; }", "radius"},
