@@ -48,6 +48,9 @@ static inline void fill_kinematics(struct contact_geom *g, const double *vk,
     }
 }
 
+/* The accumulation buffers are kept all zero between evaluations: every
+ * value is cleared where it is last read (reduction, finish), which saves
+ * a separate clearing pass over 6n doubles per evaluation. */
 static int reserve_buffers(struct dem *d, int nth)
 {
     size_t need = (size_t)nth * (6 * d->n + 3 * DEM_MAX_PATCHES);
@@ -55,6 +58,7 @@ static int reserve_buffers(struct dem *d, int nth)
         double *b = sim_realloc(d->tbuf, need * sizeof *b);
         if (!b)
             return SIM_ERR_NOMEM;
+        memset(b, 0, need * sizeof *b);
         d->tbuf = b;
         d->tbuf_cap = need;
     }
@@ -161,14 +165,16 @@ static void wall_row(struct dem *d, size_t i, const double *x, const double *v,
 }
 
 /* Gravity, external force and drag; contact sums in f, t. */
-static int finish(struct dem *d, const double *v, const double *f,
-                  const double *t, double *acc, double *alpha)
+static int finish(struct dem *d, const double *v, double *f, double *t,
+                  double *acc, double *alpha)
 {
     struct dem_coupling *c = &d->cpl;
     if (c->drag && c->uf && c->eps) {
         int rc = c->drag(c->drag_ctx, d->n, d->r, v, c->uf, c->eps, c->fd);
-        if (rc != SIM_OK)
+        if (rc != SIM_OK) {
+            memset(d->tbuf, 0, d->tbuf_cap * sizeof *d->tbuf);
             return rc;
+        }
     }
     int drag = c->drag && c->uf && c->eps;
     double kick = d->kick;
@@ -180,6 +186,7 @@ static int finish(struct dem *d, const double *v, const double *f,
                         + (drag ? c->fd[k] : 0.0);
             acc[k] = fk * d->inv_m[i] + d->gravity[a];
             alpha[k] = t[k] * d->inv_i[i];
+            f[k] = t[k] = 0;
             if (kick != 0) {   /* Verlet's closing half kick, same pass */
                 d->v[k] += kick * acc[k];
                 d->w[k] += kick * alpha[k];
@@ -211,7 +218,6 @@ int dem_forces(struct dem *d, double tm, const double *x, const double *v,
     {
         double *f = d->tbuf + (size_t)omp_get_thread_num() * stride;
         double *t = f + 3 * n, *pf = t + 3 * n;
-        memset(f, 0, stride * sizeof *f);
         #pragma omp single
         team = omp_get_num_threads();
         #pragma omp for schedule(dynamic, 256) nowait
@@ -223,14 +229,18 @@ int dem_forces(struct dem *d, double tm, const double *x, const double *v,
         if (team > 1) {
             #pragma omp for schedule(static)
             for (size_t k = 0; k < 6 * n; k++)
-                for (int th = 1; th < team; th++)
+                for (int th = 1; th < team; th++) {
                     d->tbuf[k] += d->tbuf[(size_t)th * stride + k];
+                    d->tbuf[(size_t)th * stride + k] = 0;
+                }
         }
     }
     for (int p = 0; p < 3 * DEM_MAX_PATCHES; p++) {
         double s = 0;
-        for (int th = 0; th < team; th++)
+        for (int th = 0; th < team; th++) {
             s += d->tbuf[(size_t)th * stride + 6 * n + p];
+            d->tbuf[(size_t)th * stride + 6 * n + p] = 0;
+        }
         d->patch_force[p] = s;
     }
     d->ncontacts = nc;
