@@ -321,6 +321,16 @@ double dem_kinetic_energy(const struct dem *d)
     return e;
 }
 
+void dem_coupling_set(struct dem *d, const double *fext, const double *uf,
+                      const double *eps, dem_drag_fn drag, void *drag_ctx)
+{
+    d->cpl.fext = fext;
+    d->cpl.uf = uf;
+    d->cpl.eps = eps;
+    d->cpl.drag = drag;
+    d->cpl.drag_ctx = drag_ctx;
+}
+
 double dem_mean_drag(struct dem *d, double *fd)
 {
     double T = d->cpl.sum_time;

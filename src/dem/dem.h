@@ -156,10 +156,21 @@ double dem_contact_step(const struct dem *d);
 /* Total kinetic energy, translation + rotation [J]. */
 double dem_kinetic_energy(const struct dem *d);
 
-/* Coupling: drag averaged over the last advance (3n) into fd; returns the
- * averaging time. Resets the accumulator. */
-double dem_mean_drag(struct dem *d, double *fd);
+/* Coupling, before advancing to the next coupling time: per-grain external
+ * force fext (3n) [N], fluid velocity uf (3n) [m/s] and porosity eps (n) at
+ * the grain centres, and the drag law evaluated with the grains' current
+ * velocity at every force evaluation (every sub-step and stage). Any may be
+ * NULL (no external force / no drag). The arrays are borrowed and must stay
+ * valid and unchanged during the advance. */
+void dem_coupling_set(struct dem *d, const double *fext, const double *uf,
+                      const double *eps, dem_drag_fn drag, void *drag_ctx);
 
-/* Add the drag and external forces of grains to acc (used by dem_forces). */
+/* Coupling: drag averaged over the last advance (3n) into fd; returns the
+ * averaging time. Resets the accumulator. With verlet the average is the
+ * trapezoid sum of the drag at the step ends (what the velocities
+ * received); with arkode it is the drag impulse integrated in the state
+ * with the Runge-Kutta weights. Either way m dv = (m g + F_ext + <F_d>) T
+ * holds to round-off for a grain without contacts. */
+double dem_mean_drag(struct dem *d, double *fd);
 
 #endif

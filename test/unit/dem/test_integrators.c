@@ -204,9 +204,7 @@ static void test_coupling_drag(void **state)
         double uf[3] = {0, 0, 0}, eps = 1, fext[3] = {1e-5, 0, 0};
         /* relaxation time m/c = 1 ms: much shorter than the interval */
         struct drag_ctx dc = {.c = d.m[0] / 1e-3};
-        d.cpl = (struct dem_coupling){.fext = fext, .uf = uf, .eps = &eps,
-                                      .drag = linear_drag, .drag_ctx = &dc,
-                                      .fd = d.cpl.fd, .fd_sum = d.cpl.fd_sum};
+        dem_coupling_set(&d, fext, uf, &eps, linear_drag, &dc);
         struct dem_integrator_params p = th_params();
         p.rtol = 1e-8;
         void *ctx;
