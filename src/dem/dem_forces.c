@@ -220,7 +220,9 @@ int dem_forces(struct dem *d, double tm, const double *x, const double *v,
         double *t = f + 3 * n, *pf = t + 3 * n;
         #pragma omp single
         team = omp_get_num_threads();
-        #pragma omp for schedule(dynamic, 256) nowait
+        /* static chunks: the same thread sums the same rows in every call, so
+         * results are reproducible for a given thread count */
+        #pragma omp for schedule(static, 256) nowait
         for (size_t i = 0; i < n; i++) {
             pair_row(d, i, x, v, w, tau, commit, f, t, &nc, &om2);
             wall_row(d, i, x, v, w, tau, commit, f, t, pf, &nwc, &om2);
