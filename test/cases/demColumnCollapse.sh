@@ -1,8 +1,9 @@
 #!/bin/bash
 # demColumnCollapse.sh — the granularColumnCollapse tutorial cut to a
 # 6 x 6 x 6 block (216 beads) released in air for 0.3 s (quick E2-09):
-#   - the block settles: E_k after 0.25 s stays below 1e-4 of its peak (a lightly damped
-#     lateral rattling mode of the lattice keeps it near 1e-9 J);
+#   - the block settles: E_k after 0.25 s stays below 1e-4 of its peak (a
+#     lightly damped rattling of zero-overlap neighbours keeps it near
+#     1e-9 J, see the tutorial's README);
 #   - the floor carries the weight: wallForces on the tank, averaged over
 #     the last 0.1 s (every step), equals -N m g within 2 %;
 #   - no bead is lost; the front never moves backwards of the block face.
