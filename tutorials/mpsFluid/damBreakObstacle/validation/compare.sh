@@ -1,0 +1,29 @@
+#!/bin/sh
+# compare.sh CASE — damBreakObstacle against the MARIN measurements
+# (../shared/data/kleefsman_spheric2/spheric_test2_marin_exp.csv, whose H1
+# and H3 columns are already relabelled, see the data README):
+#   rmsH1..rmsH4  RMS of simulated - measured water height over 0 <= t <= 6 s,
+#                 at the simulated sample times (measurements interpolated)
+#   P1peak        first pressure peak at P1 (max over 0.3-0.8 s) [Pa] and its
+#                 time [s], simulated and measured
+set -e
+CASE=${1:-.}
+ROOT="$(cd "$(dirname "$0")/../../../.." && pwd)"
+EXP="$ROOT/../shared/data/kleefsman_spheric2/spheric_test2_marin_exp.csv"
+H="$CASE/postProcessing/heights/0/height.dat"
+P="$CASE/postProcessing/pressure/0/p.dat"
+for f in "$EXP" "$H" "$P"; do [ -f "$f" ] || { echo "compare.sh: $f missing" >&2; exit 1; }; done
+awk -F'[ ,]+' '
+FNR == NR { if (FNR > 1) { n++; t[n] = $1; for (k = 1; k <= 4; k++) h[k, n] = $(9 + k) } next }
+/^#/ { next }
+{
+    T = $1; if (T > 6) next
+    while (j < n - 1 && t[j + 1] < T) j++
+    if (j < 1) j = 1
+    w = (T - t[j]) / (t[j + 1] - t[j])
+    for (k = 1; k <= 4; k++) { e = $(k + 1) - (h[k, j] + w * (h[k, j + 1] - h[k, j])); e2[k] += e * e }
+    m++
+}
+END { for (k = 1; k <= 4; k++) printf "rmsH%d %.4f\n", k, sqrt(e2[k] / m); printf "nH %d\n", m }' "$EXP" "$H"
+awk -F'[ ,]+' 'FNR > 1 && $1 >= 0.3 && $1 <= 0.8 && $2 > m { m = $2; tm = $1 } END { printf "P1peak_exp %.1f %.4f\n", m, tm }' "$EXP"
+awk '!/^#/ && $1 >= 0.3 && $1 <= 0.8 && $2 > m { m = $2; tm = $1 } END { printf "P1peak_sim %.1f %.4f\n", m, tm }' "$P"
