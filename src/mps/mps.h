@@ -82,6 +82,8 @@ struct mps_timers {
     double neighbours, explicit_, assembly, ppe, correction;
     long steps;
     long ppe_iters;
+    double ppe_row_iters;   /* sum over steps of iterations x unknowns     */
+    double ppe_nnz_iters;   /* sum over steps of iterations x nonzeros     */
 };
 
 struct mps_solver {

@@ -291,6 +291,10 @@ static void final_stats(const struct fluid *f)
              1e6 * t->neighbours / ps, 1e6 * t->explicit_ / ps,
              1e6 * t->assembly / ps, 1e6 * t->ppe / ps,
              1e6 * t->correction / ps, 1e6 * sum / ps);
+    if (t->ppe_row_iters > 0)
+        log_info("    PPE per iteration     %.3f ns per row, %.1f nonzeros "
+                 "per row", 1e9 * t->ppe / t->ppe_row_iters,
+                 t->ppe_nnz_iters / t->ppe_row_iters);
     log_info("    particle-steps/s      %.4g (wall clock of the run %.3g s)",
              wall > 0 ? ps / wall : 0.0, wall);
 }
