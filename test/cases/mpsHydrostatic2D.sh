@@ -5,7 +5,7 @@
 #   E1-08 (2-D quick version): L2 of the time-averaged pressure over the
 #         last 0.2 s < 6 %, max fluid speed < 10 % sqrt(g h)
 #   E1-07: deep particles flagged as surface < 0.5 %
-#   volume: no particle lost, run ends with End
+#   volume: no particle lost, run ends with End; probe and wave gauge
 #   restart: 0 -> 0.1 s in one run equals 0 -> 0.05 s + restart to 0.1 s
 #            to round-off (1e-9 relative; measured 3e-14 relative)
 #   bad input: unknown kernel (file:line, valid names), unstable deltaT
@@ -43,6 +43,15 @@ else
         || fail hydrostatic2D_umax "max |u| / sqrt(gh) $(val umax_rel) >= 0.10"
     awk -v v=$(val deepfs) 'BEGIN { exit !(v < 0.005) }' && pass hydrostatic2D_freeSurface \
         || fail hydrostatic2D_freeSurface "deep particles flagged $(val deepfs)"
+    # probes and wave gauge over the last 0.2 s: bottom probe at y = 0.0025
+    # against rho g (h - y) = 956.6 Pa within 5 %; surface at h = 0.1 m
+    # within dp/2 (function objects probes and waveGauges)
+    pb=$(awk '!/^#/ && $1 >= 0.8 { s += $2; n++ } END { print s / n }' "$c/postProcessing/bottom/0/p.dat")
+    awk -v p=$pb 'BEGIN { e = (p - 956.6) / 956.6; exit !(e < 0.05 && e > -0.05) }' \
+        && pass hydrostatic2D_probe || fail hydrostatic2D_probe "bottom pressure $pb Pa (956.6 expected)"
+    hg=$(awk '!/^#/ && $1 >= 0.8 { s += $2; n++ } END { print s / n }' "$c/postProcessing/level/0/height.dat")
+    awk -v h=$hg 'BEGIN { exit !(h > 0.0975 && h < 0.1025) }' \
+        && pass hydrostatic2D_gauge || fail hydrostatic2D_gauge "surface at $hg m (0.1 expected)"
     vol="$c/postProcessing/volume/0/volume.dat"
     if awk '!/^#/ { if ($2 != 400 || $4 != 0) bad = 1; n++ } END { exit !(n > 10 && !bad) }' "$vol"; then
         pass hydrostatic2D_volume
