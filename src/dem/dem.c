@@ -129,6 +129,7 @@ int dem_setup(struct dem *d)
 {
     double rho = d->law.c.rho;
     d->rmin = INFINITY, d->rmax = 0;
+    d->rho_min_mass = INFINITY;
     for (size_t i = 0; i < d->n; i++) {
         double r = d->r[i];
         if (!(r > 0))
@@ -139,11 +140,27 @@ int dem_setup(struct dem *d)
         d->inv_m[i] = 1.0 / d->m[i];
         d->inv_i[i] = 1.0 / (0.4 * d->m[i] * r * r);
         d->rmin = fmin(d->rmin, r);
+        d->rho_min_mass = fmin(d->rho_min_mass, d->m[i]);
         d->rmax = fmax(d->rmax, r);
     }
     if (d->n == 0)
         d->rmin = d->rmax = 0;
     d->dt_rayleigh = d->n ? contact_rayleigh_step(&d->law.c, d->rmin) : 0;
+    d->dt_stable = d->dt_rayleigh;
+    if (d->n && d->law.normal == &contact_normal_linear) {
+        /* a linear spring has a fixed frequency, omega^2 = k/m*, and an
+         * explicit step must stay below 2/omega whatever eq. (38) says;
+         * the stiffest contact is a wall (k = chi(R), m* = m) or a pair of
+         * the smallest grains (k = chi(R/2), m* = m/2) */
+        double mmin = d->rho_min_mass;
+        double kw = d->law.c.kn_linear > 0 ? d->law.c.kn_linear
+                                           : contact_chi(&d->law.c, d->rmax);
+        double kp = d->law.c.kn_linear > 0 ? d->law.c.kn_linear
+                                           : contact_chi(&d->law.c,
+                                                         0.5 * d->rmax);
+        double w2 = fmax(kw / mmin, 2.0 * kp / mmin);
+        d->dt_stable = fmin(d->dt_stable, 2.0 / sqrt(w2));
+    }
     if (d->nl.skin <= 0)
         d->nl.skin = 0.2 * d->rmax;   /* decision: 10 % of a diameter */
     TRY(nlist_build(&d->nl, d->n, d->x, d->r));

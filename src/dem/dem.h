@@ -97,7 +97,11 @@ struct dem {
     double omega2_max;            /* max kn/m* over active contacts [1/s^2] */
     long ncontacts, nwall_contacts;
     double rmin, rmax;
+    double rho_min_mass;          /* smallest grain mass [kg]               */
     double dt_rayleigh;           /* eq. (38) for rmin [s]                  */
+    double dt_stable;             /* fixed-step bound: dt_rayleigh, and for
+                                     the linear law also 2/omega of its
+                                     stiffest contact [s]                  */
     /* time and book-keeping */
     double t;
     double h_next;                /* adaptive step to start with, 0: estimate;

@@ -211,12 +211,14 @@ static int read_verlet(const struct dict *sol, struct dem *d,
         return dict_error(v.d, key(&v, "rayleighFraction"), SIM_ERR_DICT,
                           "rayleighFraction %g must be in (0, 1]",
                           s->params.dt_fraction);
-    double dtr = d->dt_rayleigh;
+    double dtr = d->dt_stable;
     if (s->params.dt > 0 && dtr > 0 && s->params.dt > dtr)
         return dict_error(v.d, key(&v, "deltaT"), SIM_ERR_DICT,
                           "deltaT %g s is above the stability bound %g s "
-                          "(Rayleigh step, eq. 38, R_min = %g m)",
-                          s->params.dt, dtr, d->rmin);
+                          "(Rayleigh step, eq. 38, R_min = %g m%s)",
+                          s->params.dt, dtr, d->rmin,
+                          dtr < d->dt_rayleigh ? "; linear law: 2/omega of "
+                          "the stiffest contact" : "");
     return SIM_OK;
 }
 

@@ -53,6 +53,10 @@ fresh system/demSolution "integrator=rk4"
 expect_fail unknownIntegrator "unknown DEM integrator 'rk4'; valid: arkode verlet"
 fresh system/demSolution "integrator=verlet" "verletCoeffs/deltaT=1e-4"
 expect_fail verletAboveBound "system/demSolution:[0-9]+:[0-9]+: deltaT 0.0001 s is above the stability bound 3.613.*e-05 s"
+fresh constant/demProperties "contact/normal=linear"
+"$T" "$c/system/demSolution" -set "integrator=verlet" >/dev/null
+"$T" "$c/system/demSolution" -set "verletCoeffs/deltaT=1e-5" >/dev/null
+expect_fail linearAboveBound "deltaT 1e-05 s is above the stability bound 5\\.[0-9]+e-06 s .*linear law"
 fresh system/demSolution "arkodeCoeffs/rtol=0"
 expect_fail rtolZero "system/demSolution:[0-9]+:[0-9]+: rtol must be > 0"
 fresh system/demSolution "arkodeCoeffs/table=RK4"

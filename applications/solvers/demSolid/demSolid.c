@@ -77,9 +77,9 @@ static int create_grains(struct solid *s)
     TRY(dem_read_solution(s->solution, d, &s->sol));
     TRY(dem_setup(d));                 /* neighbour list with the skin  */
     log_info("Grains: %zu, R in [%g, %g] m, mass %g kg; walls: %d; "
-             "Rayleigh step (eq. 38) %.4g s; skin %g m", d->n, d->rmin,
-             d->rmax, d->n ? d->m[0] : 0.0, d->nwalls, d->dt_rayleigh,
-             d->nl.skin);
+             "Rayleigh step (eq. 38) %.4g s; fixed-step bound %.4g s; "
+             "skin %g m", d->n, d->rmin, d->rmax, d->n ? d->m[0] : 0.0,
+             d->nwalls, d->dt_rayleigh, d->dt_stable, d->nl.skin);
     TRY(dem_check_initial_overlap(d, &s->sol, path));
     int found;
     snprintf(rel, sizeof rel, "%s/demContacts", s->rt.name);

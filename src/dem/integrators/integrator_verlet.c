@@ -27,7 +27,7 @@ struct verlet {
 static int verlet_create(struct dem *d, const struct dem_integrator_params *p,
                          void **ctx)
 {
-    double dtr = d->dt_rayleigh;
+    double dtr = d->dt_stable;
     double dt = p->dt > 0 ? p->dt : p->dt_fraction * dtr;
     if (!(dt > 0))
         return sim_error(SIM_ERR_INPUT, "verlet: time step %g must be > 0",
@@ -35,8 +35,9 @@ static int verlet_create(struct dem *d, const struct dem_integrator_params *p,
     if (dtr > 0 && dt > dtr)
         return sim_error(SIM_ERR_INPUT,
                          "verlet: time step %g s is above the stability "
-                         "bound (Rayleigh step, eq. 38) %g s for R_min = %g m",
-                         dt, dtr, d->rmin);
+                         "bound %g s (Rayleigh step, eq. 38, R_min = %g m%s)",
+                         dt, dtr, d->rmin,
+                         dtr < d->dt_rayleigh ? "; linear law: 2/omega" : "");
     struct verlet *v = sim_calloc(1, sizeof *v);
     if (!v)
         return SIM_ERR_NOMEM;

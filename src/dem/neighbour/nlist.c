@@ -84,7 +84,7 @@ struct grid {
     long nc[3];
 };
 
-static void grid_setup(struct grid *g, size_t n, const double *x, double hmin)
+static int grid_setup(struct grid *g, size_t n, const double *x, double hmin)
 {
     double hi[3];
     for (int a = 0; a < 3; a++)
@@ -94,6 +94,12 @@ static void grid_setup(struct grid *g, size_t n, const double *x, double hmin)
             g->lo[a] = fmin(g->lo[a], x[3 * i + a]);
             hi[a] = fmax(hi[a], x[3 * i + a]);
         }
+    for (int a = 0; a < 3; a++)
+        if (!isfinite(g->lo[a]) || !isfinite(hi[a]))
+            return sim_error(SIM_ERR_NUMERIC,
+                             "grain positions are not finite: the "
+                             "integration blew up (a time step above the "
+                             "contact stability limit?)");
     g->h = hmin;
     for (;;) {
         double cells = 1;
@@ -105,6 +111,7 @@ static void grid_setup(struct grid *g, size_t n, const double *x, double hmin)
             break;
         g->h *= 1.26;
     }
+    return SIM_OK;
 }
 
 static long cell_of(const struct grid *g, const double *xi, long c[3])
@@ -160,7 +167,7 @@ int nlist_build(struct dem_nlist *nl, size_t n, const double *x,
     for (size_t i = 0; i < n; i++)
         rmax = fmax(rmax, r[i]);
     struct grid g;
-    grid_setup(&g, n, x, fmax(2 * rmax + nl->skin, 1e-12));
+    TRY(grid_setup(&g, n, x, fmax(2 * rmax + nl->skin, 1e-12)));
     size_t ncells = (size_t)(g.nc[0] * g.nc[1] * g.nc[2]);
     if (ncells > nl->ncells_cap) {
         int64_t *h = sim_realloc(nl->head, ncells * sizeof *h);
