@@ -25,5 +25,5 @@ FNR == NR { if (FNR > 1) { n++; t[n] = $1; for (k = 1; k <= 4; k++) h[k, n] = $(
     m++
 }
 END { for (k = 1; k <= 4; k++) printf "rmsH%d %.4f\n", k, sqrt(e2[k] / m); printf "nH %d\n", m }' "$EXP" "$H"
-awk -F'[ ,]+' 'FNR > 1 && $1 >= 0.3 && $1 <= 0.8 && $2 > m { m = $2; tm = $1 } END { printf "P1peak_exp %.1f %.4f\n", m, tm }' "$EXP"
-awk '!/^#/ && $1 >= 0.3 && $1 <= 0.8 && $2 > m { m = $2; tm = $1 } END { printf "P1peak_sim %.1f %.4f\n", m, tm }' "$P"
+awk -F'[ ,]+' 'BEGIN { m = -1e30 } FNR > 1 && $1 >= 0.3 && $1 <= 0.8 && $2 > m { m = $2; tm = $1 } END { printf "P1peak_exp %.1f %.4f\n", m, tm }' "$EXP"
+awk 'BEGIN { m = -1e30 } !/^#/ && $1 >= 0.3 && $1 <= 0.8 && $2 > m { m = $2; tm = $1 } END { printf "P1peak_sim %.1f %.4f\n", m, tm }' "$P"
