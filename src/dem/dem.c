@@ -28,6 +28,7 @@ void dem_free(struct dem *d)
     nlist_free(&d->nl);
     free(d->hist); free(d->whist); free(d->pair_c); free(d->wall_chi);
     free(d->wstart); free(d->wlist);
+    free(d->old_start); free(d->old_j); free(d->old_h);
     free(d->tbuf);
     free(d->cpl.fd); free(d->cpl.fd_sum);
     memset(d, 0, sizeof *d);
@@ -181,13 +182,21 @@ static int rebuild(struct dem *d, const double *x, const size_t *map,
 {
     size_t on = d->nl.n;
     size_t onp = d->nl.npairs;
-    size_t *ostart = sim_malloc((on + 1) * sizeof *ostart);
-    uint32_t *oj = sim_malloc((onp ? onp : 1) * sizeof *oj);
-    double *oh = sim_malloc(3 * (onp ? onp : 1) * sizeof *oh);
-    if (!ostart || !oj || !oh) {
-        free(ostart), free(oj), free(oh);
-        return SIM_ERR_NOMEM;
+    /* scratch copies of the old list, kept between rebuilds so that the
+     * time loop does not allocate once they have reached their size */
+    if (on + 1 > d->old_rows_cap) {
+        GROW(d->old_start, on + 1 + on / 4);
+        d->old_rows_cap = on + 1 + on / 4;
     }
+    if (onp + 1 > d->old_pairs_cap) {
+        size_t cap = onp + 1 + onp / 4;
+        GROW(d->old_j, cap);
+        GROW(d->old_h, 3 * cap);
+        d->old_pairs_cap = cap;
+    }
+    size_t *ostart = d->old_start;
+    uint32_t *oj = d->old_j;
+    double *oh = d->old_h;
     /* Renumber the old list into the new numbering (monotone, so rows stay
      * sorted); pairs of removed grains are dropped. */
     size_t k = 0, row = 0;
@@ -216,7 +225,6 @@ static int rebuild(struct dem *d, const double *x, const size_t *map,
         rc = wall_candidates(d);
     }
     d->stats.rebuilds++;
-    free(ostart), free(oj), free(oh);
     return rc;
 }
 

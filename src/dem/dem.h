@@ -92,6 +92,10 @@ struct dem {
                                      travel skin/2 between list checks */
     size_t whist_cap, wchi_cap;
     double *tbuf;                 /* per-thread force/torque accumulation   */
+    size_t *old_start;            /* rebuild scratch: the previous list     */
+    uint32_t *old_j;
+    double *old_h;
+    size_t old_rows_cap, old_pairs_cap;
     size_t tbuf_cap;
     /* results of the last force evaluation */
     double omega2_max;            /* max kn/m* over active contacts [1/s^2] */
