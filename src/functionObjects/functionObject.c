@@ -149,8 +149,9 @@ static int create_entry(const struct dict *fd, const char *key,
     if (!e->ops)
         return unknown_type(d, type, tables);
     TRY(read_schedule(d, e));
-    if (!*enabled) {
-        dict_mark_used(fd, key);
+    if (!*enabled) {    /* a disabled entry's keys are not "unused" */
+        for (int i = 0; i < dict_size(d); i++)
+            dict_mark_used(d, dict_key_at(d, i));
         return SIM_OK;
     }
     log_info("Selecting function object %s for %s", e->ops->name, key);
