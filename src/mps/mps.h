@@ -72,7 +72,10 @@ struct mps_settings {
     const struct mps_stabiliser_ops *shifting;  /* "none" by default    */
     double shifting_coeff;
     int dummy_pressure_zero;        /* 0: nearest wall (A.9 default)    */
-    int renumber_interval;          /* steps                            */
+    int renumber_interval;          /* list rebuilds                    */
+    double skin;                    /* neighbour-list skin [dp]; the    */
+                                    /* list is reused while no particle */
+                                    /* moved more than skin/2           */
     /* system/mpsSolution */
     double max_escape_fraction;     /* stop when more have escaped      */
 };
@@ -82,6 +85,7 @@ struct mps_timers {
     double neighbours, explicit_, assembly, ppe, correction;
     long steps;
     long ppe_iters;
+    long builds;            /* neighbour-list builds (reused otherwise)    */
     double ppe_row_iters;   /* sum over steps of iterations x unknowns     */
     double ppe_nnz_iters;   /* sum over steps of iterations x nonzeros     */
 };
@@ -93,6 +97,10 @@ struct mps_solver {
     struct mps_lattice Ln, Lg, Ll;  /* per operator radius               */
     double re_max;                  /* largest operator radius [m]       */
     double r_list;                  /* neighbour-list radius (+ skin)    */
+    double *x_ref;                  /* positions at the last list build  */
+    long n_builds;                  /* neighbour-list builds             */
+    double dt_last;                 /* step size, for the reuse test     */
+    int rebuild;                    /* build the list at the next step   */
     double box_lo[3], box_hi[3];    /* particles leaving it are removed  */
     long n_escaped;                 /* removed so far                    */
     int n_fluid0;                   /* fluid particles at start          */
@@ -144,6 +152,11 @@ int mps_settings_read(const struct dict *transport, const struct dict *g,
  * SIM_ERR_NUMERIC (NaN: message names step, particle id and field),
  * SIM_ERR_INPUT (too many particles escaped). */
 int mps_step(struct mps_solver *s, double dt);
+
+/* Build the neighbour list (and renumber) at the next step, as a restart
+ * from the state just written would: called at writes so that a restarted
+ * run repeats the continuous one to round-off. */
+void mps_request_rebuild(struct mps_solver *s);
 
 /* Largest stable dt: min(maxCo dp/|u|max, 0.2 dp^2/nu); |u|max includes
  * sqrt(2 g H) of the fluid column when u = 0 (first step). */

@@ -133,6 +133,10 @@ static int read_schemes(const struct dict *d, struct mps_settings *S)
         return dict_error(d, "renumberInterval", SIM_ERR_DICT,
                           "renumberInterval must be >= 0 (0 = never)");
     S->renumber_interval = (int)r;
+    TRY(dict_get_scalar_or(d, "neighbourSkin", S->skin, &S->skin));
+    if (!(S->skin >= 0 && S->skin <= 2))
+        return dict_error(d, "neighbourSkin", SIM_ERR_DICT, "neighbourSkin "
+                          "must lie in [0, 2] dp");
     return SIM_OK;
 }
 

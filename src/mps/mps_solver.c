@@ -32,6 +32,7 @@ void mps_settings_default(struct mps_settings *S)
     S->collision_restitution = 0.2;
     S->shifting_coeff = 0.01;
     S->renumber_interval = 1;
+    S->skin = 0.0;
     S->max_escape_fraction = 0.05;
 }
 
@@ -78,9 +79,10 @@ static int alloc_work(struct mps_solver *s)
     s->b = sim_calloc(c, sizeof(double));
     s->sol = sim_calloc(c, sizeof(double));
     s->A.rowptr = sim_calloc(c + 1, sizeof(int64_t));
+    s->x_ref = sim_calloc(3 * c, sizeof(double));
     if (!s->ustar || !s->grad || !s->lap || !s->div || !s->rows_fluid
         || !s->rows_ppe || !s->scratch || !s->perm || !s->inv || !s->unk
-        || !s->b || !s->sol || !s->A.rowptr)
+        || !s->b || !s->sol || !s->A.rowptr || !s->x_ref)
         return SIM_ERR_NOMEM;
     return SIM_OK;
 }
@@ -104,7 +106,8 @@ int mps_solver_init(struct mps_solver *s, struct mps_particles *P,
     /* With the predictor, pairs are re-measured at r* = r + dt u*: a skin
      * of half a spacing keeps pairs that come into range (a Courant
      * number below 0.25 moves two particles together by < 0.5 dp). */
-    s->r_list = s->re_max + (S->predictor ? 0.5 * dp : 0.0);
+    s->r_list = s->re_max + dp * (S->skin > 0 ? S->skin
+                                              : S->predictor ? 0.5 : 0.0);
     log_info("MPS lattice (%d-D, dp = %g m, kernel %s):", d, dp, K->name);
     log_info("    number density r_e = %g dp: n0 = %.6f, %d neighbours, "
              "|F0| = %.4f", S->re_n, s->Ln.n0, s->Ln.nnb, s->Ln.f0);
@@ -133,7 +136,7 @@ void mps_solver_free(struct mps_solver *s)
     free(s->ustar); free(s->grad); free(s->lap); free(s->div);
     free(s->rows_fluid); free(s->rows_ppe); free(s->scratch);
     free(s->perm); free(s->inv); free(s->unk); free(s->b); free(s->sol);
-    free(s->A.rowptr); free(s->A.col); free(s->A.val);
+    free(s->A.rowptr); free(s->A.col); free(s->A.val); free(s->x_ref);
     linsolve_free(s->ls);
     memset(s, 0, sizeof *s);
 }
@@ -166,10 +169,66 @@ static int grow_weights(struct mps_solver *s)
     return SIM_OK;
 }
 
+/* The list (radius re_max + skin) still holds every pair within re_max
+ * while no particle has moved more than half the skin since the build;
+ * with the predictor the step's own displacement dt |u*| counts too. */
+static int list_still_valid(const struct mps_solver *s)
+{
+    const struct mps_particles *P = &s->P;
+    double half = 0.5 * (s->r_list - s->re_max), m = 0, um = 0;
+    if (half <= 0 || s->n_builds == 0 || s->S.skin <= 0 || s->rebuild)
+        return 0;
+    double g = sqrt(s->S.g[0] * s->S.g[0] + s->S.g[1] * s->S.g[1]
+                    + s->S.g[2] * s->S.g[2]);
+#pragma omp parallel for reduction(max : m, um)
+    for (int i = 0; i < P->n; i++) {
+        if (P->type[i] != MPS_FLUID)
+            continue;
+        double d = 0, u = 0;
+        for (int q = 0; q < 3; q++) {
+            d += pow(P->x[3 * i + q] - s->x_ref[3 * i + q], 2);
+            u += P->u[3 * i + q] * P->u[3 * i + q];
+        }
+        m = fmax(m, d);
+        um = fmax(um, u);
+    }
+    double pred = s->S.predictor ? 1.5 * s->dt_last * (sqrt(um) + g * s->dt_last)
+                                 : 0.0;
+    return sqrt(m) + pred < half;
+}
+
+/* Reused list: re-measure every pair at the current positions. */
+static void remeasure(struct mps_solver *s)
+{
+    struct mps_particles *P = &s->P;
+    struct neighbour_list *nl = &s->nl;
+#pragma omp parallel for schedule(static)
+    for (int i = 0; i < P->n; i++)
+        for (int64_t k = nl->start[i]; k < nl->start[i + 1]; k++) {
+            const double *a = P->x + 3 * i, *b = P->x + 3 * nl->j[k];
+            nl->r[k] = sqrt((b[0] - a[0]) * (b[0] - a[0])
+                            + (b[1] - a[1]) * (b[1] - a[1])
+                            + (b[2] - a[2]) * (b[2] - a[2]));
+        }
+}
+
+void mps_request_rebuild(struct mps_solver *s)
+{
+    s->rebuild = 1;
+}
+
 int mps_neighbours(struct mps_solver *s)
 {
     struct mps_particles *P = &s->P;
     const struct mps_settings *S = &s->S;
+    if (list_still_valid(s)) {
+        remeasure(s);
+        mps_weights(s);
+        return SIM_OK;
+    }
+    s->n_builds++;
+    s->t.builds++;
+    s->rebuild = 0;
     TRY(cells_build(&s->grid, P->dim, P->x, P->n, s->r_list, s->box_lo,
                     s->box_hi));
     if (s->grid.n_outside) {
@@ -188,13 +247,15 @@ int mps_neighbours(struct mps_solver *s)
         TRY(cells_build(&s->grid, P->dim, P->x, P->n, s->r_list, s->box_lo,
                         s->box_hi));
     }
-    if (S->renumber_interval > 0 && s->step % S->renumber_interval == 0) {
+    if (S->renumber_interval > 0
+        && (s->n_builds - 1) % S->renumber_interval == 0) {
         memcpy(s->perm, s->grid.order, sizeof *s->perm * P->n);
         mps_particles_permute(s, s->perm, P->n);
         TRY(cells_build(&s->grid, P->dim, P->x, P->n, s->r_list, s->box_lo,
                         s->box_hi));
     }
     TRY(neighbour_build(&s->nl, &s->grid, P->x, s->r_list));
+    memcpy(s->x_ref, P->x, sizeof *P->x * 3 * P->n);
     TRY(grow_weights(s));
     mps_weights(s);
     return SIM_OK;

@@ -115,6 +115,7 @@ int mps_step(struct mps_solver *s, double dt)
 {
     double t0 = omp_get_wtime();
     TRY(mps_check_finite(s));     /* state handed in from outside */
+    s->dt_last = dt;
     TRY(mps_neighbours(s));
     double t1 = omp_get_wtime();
     predict(s, dt);

