@@ -10,6 +10,7 @@
 #include <string.h>
 
 #include "core/dict.h"
+#include "core/gravity.h"
 #include "core/error.h"
 #include "core/log.h"
 #include "core/select.h"
@@ -104,7 +105,7 @@ int dem_read_gravity(const struct dict *g, struct dem *d)
 {
     if (!g)
         return SIM_OK;
-    return dict_get_vector(g, "g", 3, d->gravity);
+    return gravity_read(g, d->gravity);
 }
 
 #define DEM_ERK_TABLE_NAMES                                                \

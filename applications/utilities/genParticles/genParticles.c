@@ -23,6 +23,7 @@
 
 #include "core/app.h"
 #include "core/dict.h"
+#include "core/gravity.h"
 #include "core/error.h"
 #include "core/log.h"
 #include "genParticles.h"
@@ -95,8 +96,7 @@ static int read_physics(const struct app *a, struct gen_case *c)
     dict_free(tp);
     TRY(rc);
     TRY(app_read_dict(a, "constant/g", &gd));
-    dict_mark_used(gd, "dimensions");
-    rc = dict_get_vector(gd, "value", 3, c->g);
+    rc = gravity_read(gd, c->g);
     if (rc == SIM_OK && !(c->g[c->vertical] < 0))
         rc = dict_error(gd, "value", SIM_ERR_DICT, "hydrostaticPressure "
                         "needs gravity along -%c (%s): g = (%g %g %g)",
