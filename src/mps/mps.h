@@ -86,6 +86,7 @@ struct mps_timers {
     long steps;
     long ppe_iters;
     long builds;            /* neighbour-list builds (reused otherwise)    */
+    double ppe_setup, ppe_solve; /* solver-reported setup / iteration time */
     double ppe_row_iters;   /* sum over steps of iterations x unknowns     */
     double ppe_nnz_iters;   /* sum over steps of iterations x nonzeros     */
 };

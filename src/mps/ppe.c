@@ -142,6 +142,8 @@ int mps_ppe_solve(struct mps_solver *s, double dt)
         memset(&s->last, 0, sizeof s->last);
     s->t.ppe += omp_get_wtime() - t1;
     s->t.ppe_iters += s->last.iters;
+    s->t.ppe_setup += s->last.setup_s;
+    s->t.ppe_solve += s->last.solve_s;
     s->t.ppe_row_iters += (double)s->last.iters * m;
     s->t.ppe_nnz_iters += (double)s->last.iters * (double)s->A.nnz;
 #pragma omp parallel for schedule(static)

@@ -295,8 +295,11 @@ static void final_stats(const struct fluid *f)
              1e6 * t->correction / ps, 1e6 * sum / ps);
     if (t->ppe_row_iters > 0)
         log_info("    PPE per iteration     %.3f ns per row, %.1f nonzeros "
-                 "per row", 1e9 * t->ppe / t->ppe_row_iters,
-                 t->ppe_nnz_iters / t->ppe_row_iters);
+                 "per row (iterations only; preconditioner set-up %.3g s, "
+                 "iterations %.3g s of PPE %.3g s)",
+                 1e9 * t->ppe_solve / t->ppe_row_iters,
+                 t->ppe_nnz_iters / t->ppe_row_iters, t->ppe_setup,
+                 t->ppe_solve, t->ppe);
     log_info("    particle-steps/s      %.4g (wall clock of the run %.3g s)",
              wall > 0 ? ps / wall : 0.0, wall);
 }
