@@ -1,0 +1,308 @@
+/*
+ * couple_fluid.c — the fluid side of the sequential MPS-DEM step (Xie et al.
+ * 2025 eqs. 31-33, 36 with the momentum sources of eqs. 2 and 5; METHODS.md
+ * A.7, A.8 (MSS), A.10 steps 2-3 and 5-7, A0-13 to A0-15).
+ *
+ *   eps_i   = 1 - (1/n_s) sum_k w_s(|r_ik|) V_k                        (31)
+ *   eps_k, u_k = Shepard averages of eps_i, u_i over fluid and wall   (32-33)
+ *   f_A,i   = (1/V_i) sum_k F_bar_k w_s(|r_ki|) / sum_j w_s(|r_kj|)    (36)
+ *   f_ext,i = A: -f_A,i/(rho eps_i)   B: -f_A,i/(rho eps_i^2) + g(1/eps_i - 1)
+ *
+ * Time levels (A0-15, DEM first): the fields sent at t^m are interpolated
+ * with the porosity eps^m the fluid used in its last step; the DEM answers
+ * with its state at t^{m+1}; eps^{m+1} and f_A are then computed at the new
+ * grain positions and held frozen through mps_step().
+ */
+#include "coupling/couple_fluid.h"
+
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+#include <time.h>
+
+#include "core/error.h"
+#include "core/log.h"
+#include "coupling/channel.h"
+#include "coupling/porosity.h"
+#include "coupling/protocol.h"
+#include "coupling/reaction.h"
+#include "mps/mps.h"
+
+static double now(void)
+{
+    struct timespec ts;
+    clock_gettime(CLOCK_MONOTONIC, &ts);
+    return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
+}
+
+#define GROW(p, count)                                                       \
+    do {                                                                     \
+        void *q_ = sim_realloc((p), (size_t)(count) * sizeof *(p) + 64);     \
+        if (!q_)                                                             \
+            return SIM_ERR_NOMEM;                                            \
+        (p) = q_;                                                            \
+    } while (0)
+
+static int grow_grains(struct couple_fluid *cf, int ng)
+{
+    if (ng <= cf->cap_g && cf->xg)
+        return SIM_OK;
+    int cap = ng > 2 * cf->cap_g ? ng : 2 * cf->cap_g;
+    GROW(cf->xg, 3 * cap); GROW(cf->vg, 3 * cap); GROW(cf->rg, cap);
+    GROW(cf->Vg, cap); GROW(cf->Vs, cap); GROW(cf->Fbar, 3 * cap);
+    GROW(cf->Fin, 3 * cap); GROW(cf->eps_k, cap); GROW(cf->u_k, 3 * cap);
+    GROW(cf->gradp_k, 3 * cap); GROW(cf->wet, cap);
+    cf->cap_g = cap;
+    return SIM_OK;
+}
+
+static int grow_particles(struct couple_fluid *cf, int cap)
+{
+    if (cap <= cf->cap_p && cf->eps)
+        return SIM_OK;
+    GROW(cf->eps, cap); GROW(cf->fA, 3 * cap); GROW(cf->gradp_p, 3 * cap);
+    GROW(cf->ppe_factor, cap); GROW(cf->corr_factor, cap);
+    GROW(cf->mask, cap); GROW(cf->id_seen, cap);
+    cf->cap_p = cap;
+    return SIM_OK;
+}
+
+int couple_fluid_init(struct couple_fluid *cf, const struct dict *coupling,
+                      struct mps_solver *s)
+{
+    struct mps_particles *P = &s->P;
+    memset(cf, 0, sizeof *cf);
+    TRY(coupling_settings_read(coupling, &cf->cs));
+    cf->dim = P->dim;
+    cf->dp = s->dp;
+    cf->re = cf->cs.radius * s->dp;
+    cf->Vp = s->dp * s->dp * s->dp;
+    cf->rho = s->S.rho;
+    memcpy(cf->g, s->S.g, sizeof cf->g);
+    int cap = P->cap > P->n ? P->cap : P->n;
+    TRY(grow_particles(cf, cap));
+    if (!P->inv_eps)
+        P->inv_eps = malloc((size_t)cap * sizeof *P->inv_eps + 64);
+    if (!P->f_ext)
+        P->f_ext = calloc(3 * (size_t)cap + 8, sizeof *P->f_ext);
+    if (!P->inv_eps || !P->f_ext)
+        return SIM_ERR_NOMEM;
+    for (int i = 0; i < cap; i++) {
+        P->inv_eps[i] = 1.0;
+        cf->eps[i] = 1.0;
+        cf->ppe_factor[i] = cf->corr_factor[i] = 1.0;
+    }
+    log_info("Coupling: r_e,s = %g m (%g dp), porosity floor %g, pair skin "
+             "%g dp%s", cf->re, cf->cs.radius, cf->cs.eps_min, cf->cs.skin,
+             cf->dim == 2 ? "; 2-D slab one dp deep" : "");
+    if (cf->cs.model == COUPLING_MODEL_B)
+        log_warn("Coupling model B: the MPS solver has no hook yet for the "
+                 "PPE source factor eps_i (eq. 13) and the correction factor "
+                 "1/eps_i; they are taken as 1 (exact only where eps = 1)");
+    return SIM_OK;
+}
+
+int couple_fluid_set_grains(struct couple_fluid *cf,
+                            const struct proto_dem_state *st, double t)
+{
+    if (st->n > 1000000000)
+        return sim_error(SIM_ERR_PEER, "DEM state with %zu grains", st->n);
+    int ng = (int)st->n, grew = ng != cf->ng;
+    TRY(grow_grains(cf, ng));
+    /* Grains added since the last state: nothing was sent for them. */
+    for (int k = cf->ng; k < ng; k++) {
+        cf->eps_k[k] = 1.0;
+        cf->wet[k] = 0;
+    }
+    memcpy(cf->xg, st->position, 3 * (size_t)ng * sizeof *cf->xg);
+    memcpy(cf->vg, st->velocity, 3 * (size_t)ng * sizeof *cf->vg);
+    memcpy(cf->rg, st->radius, (size_t)ng * sizeof *cf->rg);
+    memcpy(cf->Fbar, st->drag, 3 * (size_t)ng * sizeof *cf->Fbar);
+    for (int k = 0; k < ng; k++) {
+        double r = cf->rg[k];
+        if (!(r > 0) || !isfinite(r))
+            return sim_error(SIM_ERR_PEER, "DEM state: grain %d has radius "
+                             "%g", k, r);
+        cf->Vs[k] = 4.0 / 3.0 * M_PI * r * r * r;
+        cf->Vg[k] = cf->dim == 3 ? cf->Vs[k] : cf->Vs[k] / cf->dp;
+    }
+    if (grew && ng > 0) {
+        double *d = malloc((size_t)ng * sizeof *d);
+        if (!d)
+            return SIM_ERR_NOMEM;
+        for (int k = 0; k < ng; k++)
+            d[k] = 2 * cf->rg[k];
+        coupling_guard_grain_size(ng, d, cf->re);
+        free(d);
+    }
+    cf->ng = ng;
+    cf->dem_time = t;
+    return SIM_OK;
+}
+
+/* Particle order changes at every renumbering (and particles leave): a
+ * pair list with a skin is only reusable while the ids are unchanged. */
+static void check_order(struct couple_fluid *cf, const struct mps_particles *P)
+{
+    if (P->n != cf->n_seen
+        || memcmp(P->id, cf->id_seen, (size_t)P->n * sizeof *P->id) != 0) {
+        coupling_pairs_invalidate(&cf->pairs);
+        memcpy(cf->id_seen, P->id, (size_t)P->n * sizeof *P->id);
+        cf->n_seen = P->n;
+    }
+}
+
+int couple_fluid_update(struct couple_fluid *cf, struct mps_solver *s)
+{
+    struct mps_particles *P = &s->P;
+    double t0 = now();
+    TRY(grow_particles(cf, P->cap > P->n ? P->cap : P->n));
+    if (cf->cs.skin > 0)
+        check_order(cf, P);
+    int searched;
+    TRY(coupling_pairs_update(&cf->pairs, cf->dim, cf->re,
+                              cf->cs.skin * cf->dp, cf->ng, cf->xg, P->n,
+                              P->x, &searched));
+    TRY(coupling_porosity(&cf->pairs, cf->Vg, cf->cs.eps_min, cf->eps,
+                          P->inv_eps, &cf->n_clamped));
+    for (int i = 0; i < P->n; i++)
+        cf->mask[i] = P->type[i] != MPS_DUMMY;
+    coupling_reaction_input(cf->cs.model, cf->cs.conservative, cf->ng,
+                            cf->Fbar, cf->eps_k, cf->Fin);
+    TRY(coupling_reaction(&cf->pairs, cf->mask, cf->Fin, cf->Vp, cf->fA,
+                          &cf->n_orphan));
+    memset(P->f_ext, 0, 3 * (size_t)P->n * sizeof *P->f_ext);
+    for (int i = 0; i < P->n; i++)
+        cf->mask[i] = P->type[i] == MPS_FLUID;
+    coupling_mps_accel(cf->cs.model, cf->cs.conservative, P->n, cf->eps,
+                       cf->fA, cf->rho, cf->g, cf->mask, P->f_ext);
+    coupling_ppe_source_factor(cf->cs.model, P->n, cf->eps, cf->ppe_factor);
+    coupling_correction_factor(cf->cs.model, P->n, cf->eps, cf->corr_factor);
+    cf->wall += now() - t0;
+    return SIM_OK;
+}
+
+int couple_fluid_grain_fields(struct couple_fluid *cf, struct mps_solver *s)
+{
+    struct mps_particles *P = &s->P;
+    double t0 = now();
+    /* The pair list must describe the current particle order: after a
+     * step (renumbered, moved) search again at the grain positions the
+     * porosity was computed for. */
+    coupling_pairs_invalidate(&cf->pairs);
+    TRY(coupling_pairs_update(&cf->pairs, cf->dim, cf->re, 0.0, cf->ng,
+                              cf->xg, P->n, P->x, NULL));
+    for (int i = 0; i < P->n; i++) {
+        cf->mask[i] = P->type[i] != MPS_DUMMY;
+        cf->eps[i] = 1.0 / P->inv_eps[i];
+    }
+    const double *gp = NULL;
+    /* Model A: consistent gradient (A0-14) on the solver's last list; its
+     * weights are one step old (positions moved by dt u), and before the
+     * first step there is no list: then no gradient is sent. */
+    if (cf->cs.model == COUPLING_MODEL_A && s->nl.start && s->nl.n == P->n
+        && s->w_g) {
+        coupling_gradient_consistent(P->n, s->nl.start, s->nl.j, s->w_g,
+                                     cf->dim, s->Lg.n0, P->x, P->p,
+                                     P->inv_eps, cf->mask, cf->gradp_p);
+        gp = cf->gradp_p;
+    }
+    struct coupling_grain_fields G = { .eps = cf->eps_k, .u = cf->u_k,
+                                       .gradp = gp ? cf->gradp_k : NULL,
+                                       .wet = cf->wet };
+    coupling_interp_grains(&cf->pairs, cf->mask, cf->eps, P->u, gp, &G);
+    if (cf->cs.model == COUPLING_MODEL_A && !gp)
+        memset(cf->gradp_k, 0, 3 * (size_t)cf->ng * sizeof *cf->gradp_k);
+    cf->wall += now() - t0;
+    return SIM_OK;
+}
+
+void couple_fluid_reaction_total(const struct couple_fluid *cf,
+                                 const struct mps_solver *s, double F[3])
+{
+    F[0] = F[1] = F[2] = 0;
+    for (int i = 0; i < s->P.n && i < cf->pairs.np; i++)
+        for (int c = 0; c < 3; c++)
+            F[c] += cf->Vp * cf->fA[3 * i + c];
+}
+
+int couple_fluid_open(struct couple_fluid *cf, const struct dict *coupling,
+                      const char *case_dir, const char *program)
+{
+    struct channel_settings cs;
+    TRY(channel_signals_install());
+    TRY(channel_settings_default(&cs, CHANNEL_FLUID, program, case_dir));
+    TRY(channel_settings_from_dict(coupling, &cs));
+    cs.dimension = cf->dim;
+    return channel_open(&cs, &cf->ch);
+}
+
+static int receive_dem(struct couple_fluid *cf, double t_expect,
+                       double tol)
+{
+    struct channel_frame f;
+    const void *pl;
+    struct proto_dem_state st;
+    double t0 = now();
+    TRY(channel_recv(cf->ch, &f, &pl));
+    cf->wait += now() - t0;
+    int rc = proto_view_dem_state(&f, pl, &st);
+    if (!rc && fabs(f.time - t_expect) > tol)
+        rc = sim_error(SIM_ERR_INPUT, "coupling: the DEM side is at t = %.9g "
+                       "s, the fluid expects %.9g s: deltaT, startTime and "
+                       "endTime of system/controlDict must agree for "
+                       "mpsFluid and demSolid (fixed deltaT; the DEM deltaT "
+                       "is the coupling interval)", f.time, t_expect);
+    if (!rc)
+        rc = couple_fluid_set_grains(cf, &st, f.time);
+    int rc2 = channel_recv_done(cf->ch);
+    return rc ? rc : rc2;
+}
+
+static int send_fluid(struct couple_fluid *cf, long step, double t)
+{
+    struct proto_fluid_state fs = {
+        .n = (size_t)cf->ng, .velocity = cf->u_k, .porosity = cf->eps_k,
+        .grad_p = cf->cs.model == COUPLING_MODEL_A ? cf->gradp_k : NULL };
+    return proto_send_fluid_state(cf->ch, (uint64_t)step, t, &fs);
+}
+
+int couple_fluid_exchange(struct couple_fluid *cf, struct mps_solver *s,
+                          long step, double t, double dt)
+{
+    double tol = 1e-6 * dt;
+    if (cf->exchanges == 0) {
+        /* initial state at t: porosity eps^m before the first send */
+        TRY(receive_dem(cf, t, tol));
+        for (int k = 0; k < cf->ng; k++)
+            cf->eps_k[k] = 1.0;
+        TRY(couple_fluid_update(cf, s));
+    }
+    TRY(couple_fluid_grain_fields(cf, s));
+    TRY(send_fluid(cf, step, t));
+    TRY(receive_dem(cf, t + dt, tol));
+    TRY(couple_fluid_update(cf, s));
+    if (cf->n_clamped > 0 && cf->exchanges % 100 == 0)
+        coupling_guard_porosity(cf->n_clamped, s->P.n, cf->cs.eps_min);
+    cf->exchanges++;
+    return SIM_OK;
+}
+
+void couple_fluid_close(struct couple_fluid *cf, int rc)
+{
+    if (cf->ch)
+        channel_close(cf->ch, rc);
+    cf->ch = NULL;
+}
+
+void couple_fluid_free(struct couple_fluid *cf)
+{
+    couple_fluid_close(cf, SIM_OK);
+    coupling_pairs_free(&cf->pairs);
+    free(cf->xg); free(cf->vg); free(cf->rg); free(cf->Vg); free(cf->Vs);
+    free(cf->Fbar); free(cf->Fin); free(cf->eps_k); free(cf->u_k);
+    free(cf->gradp_k); free(cf->wet);
+    free(cf->eps); free(cf->fA); free(cf->gradp_p); free(cf->ppe_factor);
+    free(cf->corr_factor); free(cf->mask); free(cf->id_seen);
+    memset(cf, 0, sizeof *cf);
+}
