@@ -60,6 +60,22 @@ static int grow(struct couple_dem *cd, size_t n)
     return SIM_OK;
 }
 
+int couple_enabled(const struct dict *coupling, int *on)
+{
+    static const char *const schemes[] = { "sequential", "concurrent", NULL };
+    int idx;
+    *on = 0;
+    if (!coupling)
+        return SIM_OK;
+    TRY(dict_get_bool_or(coupling, "coupled", 1, on));
+    TRY(dict_get_word_or(coupling, "scheme", schemes, 0, &idx));
+    if (*on && idx == 1)
+        return dict_error(coupling, "scheme", SIM_ERR_DICT, "scheme "
+                          "concurrent (one-step lag) is not implemented yet; "
+                          "use sequential (METHODS.md A.8, A0-15)");
+    return SIM_OK;
+}
+
 int couple_dem_init(struct couple_dem *cd, const struct dict *coupling,
                     const struct dict *transport, const double g[3])
 {

@@ -51,6 +51,12 @@ struct couple_dem {
     double wait;                /* seconds waiting for the fluid side    */
 };
 
+/* Whether a case is coupled: system/couplingDict present (coupling may be
+ * NULL) and `coupled` (default yes). `scheme sequential;` is the only
+ * scheme so far; `concurrent` is refused with a message. Both programs
+ * call this before anything of the other phase is allocated. */
+int couple_enabled(const struct dict *coupling, int *on);
+
 /* Settings from system/couplingDict; fluid density and viscosity from
  * constant/transportProperties (rho, nu); gravity g [m/s^2]. */
 int couple_dem_init(struct couple_dem *cd, const struct dict *coupling,

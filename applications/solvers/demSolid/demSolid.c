@@ -10,6 +10,12 @@
  * controlDict's deltaT is the output/function-object (and, coupled, the
  * coupling) interval; the DEM sub-steps inside it are the integrator's
  * business (system/demSolution).
+ *
+ * Coupled (system/couplingDict present, `coupled yes`): also reads
+ * constant/transportProperties (fluid rho, nu) and runs beside mpsFluid
+ * (runTandem mpsFluid demSolid): the initial state is sent, then every
+ * interval receives the fluid state, advances with drag and buoyancy /
+ * pressure-gradient forces, and sends the new state (couple_dem.h).
  */
 #include <math.h>
 #include <stdio.h>
@@ -22,6 +28,7 @@
 #include "core/error.h"
 #include "core/log.h"
 #include "core/time.h"
+#include "coupling/couple_dem.h"
 #include "dem/dem.h"
 #include "dem/dem_case.h"
 #include "dem/functionObjects/dem_fo.h"
@@ -30,6 +37,9 @@
 struct solid {
     struct app app;
     struct dict *control, *props, *solution, *particles, *gravity;
+    struct dict *coupling, *transport;  /* coupled runs only            */
+    int coupled;
+    struct couple_dem cd;
     struct run_time rt;
     struct dem d;
     struct dem_solution sol;
@@ -87,6 +97,13 @@ static int create_grains(struct solid *s)
                           &found));
     if (found)
         log_info("Contact histories read from %s", rel);
+    TRY(read_optional(s, "system/couplingDict", &s->coupling));
+    TRY(couple_enabled(s->coupling, &s->coupled));
+    if (s->coupled) {
+        TRY(app_read_dict(&s->app, "constant/transportProperties",
+                          &s->transport));
+        TRY(couple_dem_init(&s->cd, s->coupling, s->transport, d->gravity));
+    }
     return s->sol.integrator->create(d, &s->sol.params, &s->integ);
 }
 
@@ -170,8 +187,14 @@ static int step(struct solid *s)
 {
     struct dem *d = &s->d;
     time_set_step(&s->rt, s->rt.delta_t);
+    if (s->coupled)
+        TRY(couple_dem_recv(&s->cd, d));       /* fluid state at d->t */
     time_increment(&s->rt);
     TRY(s->sol.integrator->advance(s->integ, d, target_time(s)));
+    if (s->coupled) {
+        TRY(couple_dem_after(&s->cd, d));
+        TRY(couple_dem_send(&s->cd, d, s->rt.step, d->t));
+    }
     long outside = dem_check_domain(d);
     if (outside < 0)
         return SIM_ERR_NOMEM;
@@ -215,8 +238,27 @@ static void final_stats(const struct solid *s)
              wall > 0 ? ps / wall : 0.0, cpu > 0 ? ps / cpu : 0.0);
 }
 
+/* A coupled run stopped by the peer, a signal or a time-out: the grains
+ * are at a complete coupling time (the wait comes before or after an
+ * advance, never inside one), so write them, then tell the peer why we
+ * leave. A failure of the DEM itself leaves no consistent state to write. */
+static void coupled_failure(struct solid *s, int rc)
+{
+    char msg[1024];
+    snprintf(msg, sizeof msg, "%s", sim_error_message());
+    if ((rc == SIM_ERR_PEER || rc == SIM_ERR_INTERRUPT
+         || rc == SIM_ERR_TIMEOUT) && write_fields(s) == SIM_OK)
+        log_info("Last complete state (t = %g s) written to %s/dem.vtu",
+                 s->d.t, s->rt.name);
+    couple_dem_close(&s->cd, rc);
+    sim_error(rc, "%s", msg);
+}
+
 static void cleanup(struct solid *s)
 {
+    couple_dem_free(&s->cd);
+    dict_free(s->coupling);
+    dict_free(s->transport);
     if (s->integ)
         s->sol.integrator->destroy(s->integ);
     fo_list_free(s->fos);
@@ -243,10 +285,22 @@ int main(int argc, char **argv)
     dict_warn_unused(s.control);
     dict_warn_unused(s.props);
     dict_warn_unused(s.solution);
+    if (s.coupled) {
+        if ((rc = couple_dem_open(&s.cd, s.coupling, s.app.case_abs,
+                                  "demSolid", s.dim))
+            || (rc = couple_dem_send(&s.cd, &s.d, s.rt.step, s.d.t)))
+            coupled_failure(&s, rc), app_fatal(&s.app, rc);
+        dict_warn_unused(s.coupling);
+    }
     log_info("\nStarting time loop\n");
     while (time_running(&s.rt))
-        if ((rc = step(&s)))
+        if ((rc = step(&s))) {
+            if (s.coupled)
+                coupled_failure(&s, rc);
             app_fatal(&s.app, rc);
+        }
+    if (s.coupled)
+        couple_dem_close(&s.cd, SIM_OK);
     final_stats(&s);
     cleanup(&s);
     return app_end(&s.app);
