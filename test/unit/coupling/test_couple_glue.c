@@ -19,6 +19,8 @@
 #include <omp.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/wait.h>
+#include <unistd.h>
 
 #include "../dem/dem_test_helpers.h"
 #include "core/dict.h"
@@ -431,6 +433,199 @@ static void test_settling_mps(void **st)
     settling(1, 0.10);
 }
 
+/* ---- the same coupled step through the channel, two processes --------- */
+
+enum { CH_STEPS = 30 };
+static const double CH_DP = 0.004, CH_DT = 5e-4;
+
+static struct dict *channel_dict(const char *name)
+{
+    char text[256];
+    snprintf(text, sizeof text, "model B; kernelRadius 2.6; channel %s; "
+             "timeout 20;", name);
+    return coupling_dict(text);
+}
+
+static void ch_grain(struct dem *d, void **integ)
+{
+    make_dem(d, 1, 1);
+    d->x[0] = 10 * CH_DP + 0.0003;
+    d->x[1] = 17 * CH_DP;
+    assert_int_equal(dem_setup(d), 0);
+    struct dem_integrator_params ip = th_params();
+    ip.dt = 2e-5;
+    assert_int_equal(dem_integrator_verlet.create(d, &ip, integ), 0);
+}
+
+/* demSolid's loop (applications/solvers/demSolid) in a child process. */
+static int dem_side(void *arg)
+{
+    const char *name = arg;
+    struct dict *cdd = channel_dict(name), *tp = transport_dict();
+    struct couple_dem cd;
+    struct dem d;
+    void *integ;
+    ch_grain(&d, &integ);
+    int rc = couple_dem_init(&cd, cdd, tp, d.gravity);
+    if (!rc)
+        rc = couple_dem_open(&cd, cdd, "/tmp", "demSolid", 2);
+    if (!rc)
+        rc = couple_dem_send(&cd, &d, 0, d.t);
+    for (int m = 0; m < CH_STEPS && !rc; m++) {
+        if ((rc = couple_dem_recv(&cd, &d)))
+            break;
+        if ((rc = dem_integrator_verlet.advance(integ, &d, (m + 1) * CH_DT)))
+            break;
+        if ((rc = couple_dem_after(&cd, &d)))
+            break;
+        rc = couple_dem_send(&cd, &d, m + 1, d.t);
+    }
+    couple_dem_close(&cd, rc);
+    return rc;
+}
+
+/* Fluid side: in process, or through the channel with couple_fluid_exchange;
+ * returns the last DEM state the fluid received (v, x). */
+static void fluid_run(int channel, const char *name, double out[4])
+{
+    struct dict *cdd = channel_dict(name), *tp = transport_dict();
+    struct mps_solver s;
+    struct couple_fluid cf;
+    struct couple_dem cd;
+    struct dem d;
+    void *integ = NULL;
+    make_fluid(&s, 20, 20, 0, CH_DP);
+    assert_int_equal(couple_fluid_init(&cf, cdd, &s), 0);
+    if (channel) {
+        assert_int_equal(couple_fluid_open(&cf, cdd, "/tmp", "mpsFluid"), 0);
+        for (int m = 0; m < CH_STEPS; m++) {
+            assert_int_equal(couple_fluid_exchange(&cf, &s, m, m * CH_DT,
+                                                   CH_DT), 0);
+            assert_int_equal(mps_step(&s, CH_DT), 0);
+        }
+        couple_fluid_close(&cf, SIM_OK);
+    } else {
+        struct proto_dem_state ds;
+        double zero[3] = { 0 };
+        ch_grain(&d, &integ);
+        assert_int_equal(couple_dem_init(&cd, cdd, tp, d.gravity), 0);
+        couple_dem_state(&cd, &d, &ds);
+        ds.drag = zero;
+        assert_int_equal(couple_fluid_set_grains(&cf, &ds, 0), 0);
+        assert_int_equal(couple_fluid_update(&cf, &s), 0);
+        for (int m = 0; m < CH_STEPS; m++) {
+            assert_int_equal(couple_fluid_grain_fields(&cf, &s), 0);
+            struct proto_fluid_state fs = fluid_view(&cf);
+            assert_int_equal(couple_dem_apply(&cd, &d, &fs), 0);
+            assert_int_equal(dem_integrator_verlet.advance(integ, &d,
+                                                           (m + 1) * CH_DT), 0);
+            assert_int_equal(couple_dem_after(&cd, &d), 0);
+            couple_dem_state(&cd, &d, &ds);
+            assert_int_equal(couple_fluid_set_grains(&cf, &ds,
+                                                     (m + 1) * CH_DT), 0);
+            assert_int_equal(couple_fluid_update(&cf, &s), 0);
+            assert_int_equal(mps_step(&s, CH_DT), 0);
+        }
+        dem_integrator_verlet.destroy(integ);
+        dem_free(&d);
+        couple_dem_free(&cd);
+    }
+    out[0] = cf.vg[1];
+    out[1] = cf.xg[1];
+    out[2] = cf.dem_time;
+    out[3] = s.P.u[3 * (s.P.n / 2) + 1];
+    couple_fluid_free(&cf);
+    mps_solver_free(&s);
+    dict_free(cdd);
+    dict_free(tp);
+}
+
+static void test_channel_matches_in_process(void **st)
+{
+    (void)st;
+    char name[64];
+    double a[4], b[4];
+    log_set_quiet(1);
+    snprintf(name, sizeof name, "mpsdem-glue-%d", (int)getpid());
+    fluid_run(0, name, a);
+    fflush(stdout);
+    pid_t pid = fork();
+    if (pid == 0) {
+        omp_set_num_threads(1);
+        _exit(dem_side(name) ? 1 : 0);
+    }
+    fluid_run(1, name, b);
+    int status;
+    assert_int_equal(waitpid(pid, &status, 0), pid);
+    assert_true(WIFEXITED(status) && WEXITSTATUS(status) == 0);
+    print_message("after %d exchanges: grain v = %.17g (in process %.17g), "
+                  "t = %.17g s\n", CH_STEPS, b[0], a[0], b[2]);
+    assert_true(fabs(b[2] - CH_STEPS * CH_DT) < 1e-12);
+    for (int k = 0; k < 4; k++)      /* same arithmetic, bit for bit */
+        assert_true(a[k] == b[k]);
+    assert_true(a[0] < -0.05);       /* the grain did fall */
+}
+
+/* Mismatched coupling intervals are refused with a message, not run. */
+static int dem_side_wrong_dt(void *arg)
+{
+    const char *name = arg;
+    struct dict *cdd = channel_dict(name), *tp = transport_dict();
+    struct couple_dem cd;
+    struct dem d;
+    void *integ;
+    ch_grain(&d, &integ);
+    int rc = couple_dem_init(&cd, cdd, tp, d.gravity);
+    if (!rc)
+        rc = couple_dem_open(&cd, cdd, "/tmp", "demSolid", 2);
+    if (!rc)
+        rc = couple_dem_send(&cd, &d, 0, d.t);
+    if (!rc)
+        rc = couple_dem_recv(&cd, &d);
+    if (!rc)
+        rc = dem_integrator_verlet.advance(integ, &d, 2 * CH_DT);
+    if (!rc)
+        rc = couple_dem_after(&cd, &d);
+    if (!rc)
+        rc = couple_dem_send(&cd, &d, 1, d.t);
+    if (!rc)   /* the fluid leaves: the next wait reports the peer */
+        rc = couple_dem_recv(&cd, &d);
+    couple_dem_close(&cd, rc);
+    return rc == SIM_ERR_PEER ? 0 : 1;
+}
+
+static void test_channel_wrong_interval(void **st)
+{
+    (void)st;
+    char name[64];
+    log_set_quiet(1);
+    snprintf(name, sizeof name, "mpsdem-glue-dt-%d", (int)getpid());
+    fflush(stdout);
+    pid_t pid = fork();
+    if (pid == 0)
+        _exit(dem_side_wrong_dt(name));
+    struct dict *cdd = channel_dict(name);
+    struct mps_solver s;
+    struct couple_fluid cf;
+    make_fluid(&s, 20, 20, 0, CH_DP);
+    assert_int_equal(couple_fluid_init(&cf, cdd, &s), 0);
+    assert_int_equal(couple_fluid_open(&cf, cdd, "/tmp", "mpsFluid"), 0);
+    int rc = couple_fluid_exchange(&cf, &s, 0, 0.0, CH_DT);
+    print_message("refused: %s\n", sim_error_message());
+    assert_int_equal(rc, SIM_ERR_INPUT);
+    assert_non_null(strstr(sim_error_message(), "controlDict"));
+    couple_fluid_close(&cf, rc);
+    int status;
+    assert_int_equal(waitpid(pid, &status, 0), pid);
+    assert_true(WIFEXITED(status) && WEXITSTATUS(status) == 0);
+    char path[128];
+    snprintf(path, sizeof path, "/dev/shm/%s", name);
+    assert_int_equal(access(path, F_OK), -1);   /* nothing left behind */
+    couple_fluid_free(&cf);
+    mps_solver_free(&s);
+    dict_free(cdd);
+}
+
 int main(void)
 {
     /* a few hundred particles: threads only add overhead (and on a loaded
@@ -442,6 +637,8 @@ int main(void)
         cmocka_unit_test(test_gradient_model_a),
         cmocka_unit_test(test_settling_still),
         cmocka_unit_test(test_settling_mps),
+        cmocka_unit_test(test_channel_matches_in_process),
+        cmocka_unit_test(test_channel_wrong_interval),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
