@@ -137,8 +137,9 @@ void mps_solver_free(struct mps_solver *s);
 int mps_particles_alloc(struct mps_particles *P, int n, int dim);
 void mps_particles_free(struct mps_particles *P);
 
-/* Settings with the documented defaults (Zhang kernel, 2.1/2.1/3.1... see
- * mps_settings.c). */
+/* Settings with the documented defaults (mps_solver.c; the paper's method:
+ * Zhang kernel, r_e 2.1/2.1/3.1 dp, gamma 0.01, beta 0.8, alpha 0.9, no
+ * predictor, no clipping, no collision, no shifting). */
 void mps_settings_default(struct mps_settings *S);
 
 /* Settings from constant/transportProperties, constant/g (may be NULL:
