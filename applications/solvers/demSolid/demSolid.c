@@ -247,7 +247,8 @@ static void coupled_failure(struct solid *s, int rc)
     char msg[1024];
     snprintf(msg, sizeof msg, "%s", sim_error_message());
     if ((rc == SIM_ERR_PEER || rc == SIM_ERR_INTERRUPT
-         || rc == SIM_ERR_TIMEOUT) && write_fields(s) == SIM_OK)
+         || rc == SIM_ERR_TIMEOUT) && s->rt.step > 0
+        && write_fields(s) == SIM_OK)
         log_info("Last complete state (t = %g s) written to %s/dem.vtu",
                  s->d.t, s->rt.name);
     couple_dem_close(&s->cd, rc);
