@@ -1,0 +1,63 @@
+#!/usr/bin/env bash
+# mpsDemSettling.sh — quick tandem run of tutorials/mpsDem/singleGrainSettling
+# (mpsFluid + demSolid through the coupling channel, Model B, 0.35 s):
+#   both programs reach End, the channel segment is gone afterwards;
+#   the grain's mean speed over 0.2-0.35 s is within 3 % of the drag-law
+#   balance slip at its porosity eps_k = 0.9883 (0.3357 m/s; measured
+#   -0.4 % over 0.2-0.6 s in the tutorial) and within 15 % of the
+#   single-sphere 0.343 m/s (E1-14, absolute);
+#   a case without system/couplingDict runs demSolid alone (no channel).
+# MPSFLUID / DEMSOLID override the programs (default bin/).
+ROOT="$(cd "$(dirname "$0")/../.." && pwd)"
+TUT="$ROOT/tutorials/mpsDem/singleGrainSettling"
+MPSFLUID=${MPSFLUID:-$ROOT/bin/mpsFluid}
+DEMSOLID=${DEMSOLID:-$ROOT/bin/demSolid}
+TMP="$(mktemp -d)"
+trap 'rm -rf "$TMP"' EXIT
+export OMP_NUM_THREADS=1
+fails=0
+pass() { echo "PASS $1"; }
+fail() { echo "FAIL $1: $2"; fails=$((fails + 1)); }
+for p in "$MPSFLUID" "$DEMSOLID" "$ROOT/bin/genParticles"; do
+    [ -x "$p" ] || { fail mpsDemSettling "$p not built"; exit 1; }
+done
+c="$TMP/case"
+cp -r "$TUT" "$c"
+sed -i 's/^endTime .*/endTime 0.35;/; s/^timeout .*/timeout 30;/' \
+    "$c/system/controlDict" "$c/system/couplingDict"
+echo "channel mpsdem-settling-test-$$;" >> "$c/system/couplingDict"
+(cd "$c" && "$ROOT/bin/genParticles" > log.genParticles 2>&1) \
+    || { fail mpsDemSettling "genParticles failed"; exit 1; }
+(cd "$c" && timeout 300 "$MPSFLUID" > log.mpsFluid 2>&1) &
+pf=$!
+(cd "$c" && timeout 300 "$DEMSOLID" > log.demSolid 2>&1)
+rd=$?
+wait $pf
+rf=$?
+if [ $rf -eq 0 ] && [ $rd -eq 0 ] && grep -q '^End' "$c/log.mpsFluid" \
+   && grep -q '^End' "$c/log.demSolid" && grep -q 'exchanges' "$c/log.mpsFluid"; then
+    pass mpsDemSettling_tandem
+else
+    fail mpsDemSettling_tandem "exit $rf/$rd: $(grep -h -A2 FATAL "$c"/log.* | head -4 | tr '\n' ' ')"
+    exit 1
+fi
+[ ! -e "/dev/shm/mpsdem-settling-test-$$" ] && pass mpsDemSettling_channel_removed \
+    || fail mpsDemSettling_channel_removed "/dev/shm/mpsdem-settling-test-$$ left"
+out=$("$c/validation/terminalVelocity.sh" 0.2)
+echo "    $(echo "$out" | head -1)"
+m=$(echo "$out" | awk '/^grain speed/ { print $7 }')
+awk -v m="$m" 'BEGIN { exit !(m > 0 && m / 0.3357 - 1 < 0.03 && 1 - m / 0.3357 < 0.03) }' \
+    && pass "mpsDemSettling_balance mean $m m/s vs 0.3357" \
+    || fail mpsDemSettling_balance "mean speed $m m/s, balance 0.3357 m/s (3 %)"
+awk -v m="$m" 'BEGIN { d = m / 0.343 - 1; exit !(d < 0.15 && d > -0.15) }' \
+    && pass mpsDemSettling_absolute || fail mpsDemSettling_absolute "$m m/s vs 0.343 (15 %)"
+# uncoupled: the same case without couplingDict, demSolid alone
+rm "$c/system/couplingDict"
+sed -i 's/^endTime .*/endTime 0.01;/' "$c/system/controlDict"
+if (cd "$c" && timeout 60 "$DEMSOLID" > log.demSolid.alone 2>&1) \
+   && ! grep -qi 'channel\|coupling' "$c/log.demSolid.alone"; then
+    pass mpsDemSettling_uncoupled
+else
+    fail mpsDemSettling_uncoupled "demSolid alone: $(tail -3 "$c/log.demSolid.alone" | tr '\n' ' ')"
+fi
+exit $((fails > 0))
