@@ -74,7 +74,7 @@ static int check_structure(const struct csr_matrix *A)
 static int scan_rows(const struct csr_matrix *A, double *diag, int *what)
 {
     int bad = A->n, kind = 0;
-#pragma omp parallel for schedule(static) reduction(min : bad)
+#pragma omp parallel for schedule(static) reduction(min : bad) if (LS_PAR(A->n))
     for (int i = 0; i < A->n; i++) {
         double d = 0.0;
         int k_bad = 0;
@@ -166,7 +166,7 @@ void csr_spmv(const struct csr_matrix *A, const double *x, double *y)
     const int64_t *rp = A->rowptr;
     const int32_t *col = A->col;
     const double *val = A->val;
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (LS_PAR(A->n))
     for (int i = 0; i < A->n; i++)
         y[i] = row_dot(rp, col, val, x, i);
 }
@@ -177,7 +177,7 @@ double csr_spmv_dot(const struct csr_matrix *A, const double *p, double *q)
     const int32_t *col = A->col;
     const double *val = A->val;
     double d = 0.0;
-#pragma omp parallel for schedule(static) reduction(+ : d)
+#pragma omp parallel for schedule(static) reduction(+ : d) if (LS_PAR(A->n))
     for (int i = 0; i < A->n; i++) {
         double s = row_dot(rp, col, val, p, i);
         q[i] = s;
@@ -193,7 +193,7 @@ double csr_residual(const struct csr_matrix *A, const double *b,
     const int32_t *col = A->col;
     const double *val = A->val;
     double d = 0.0;
-#pragma omp parallel for schedule(static) reduction(+ : d)
+#pragma omp parallel for schedule(static) reduction(+ : d) if (LS_PAR(A->n))
     for (int i = 0; i < A->n; i++) {
         double s = b[i] - row_dot(rp, col, val, x, i);
         r[i] = s;
@@ -205,7 +205,7 @@ double csr_residual(const struct csr_matrix *A, const double *b,
 double vec_dot(int n, const double *a, const double *b)
 {
     double d = 0.0;
-#pragma omp parallel for schedule(static) reduction(+ : d)
+#pragma omp parallel for schedule(static) reduction(+ : d) if (LS_PAR(n))
     for (int i = 0; i < n; i++)
         d += a[i] * b[i];
     return d;
@@ -213,14 +213,14 @@ double vec_dot(int n, const double *a, const double *b)
 
 void vec_copy(int n, const double *a, double *b)
 {
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (LS_PAR(n))
     for (int i = 0; i < n; i++)
         b[i] = a[i];
 }
 
 void vec_zero(int n, double *a)
 {
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (LS_PAR(n))
     for (int i = 0; i < n; i++)
         a[i] = 0.0;
 }
@@ -238,7 +238,7 @@ static double entry(const struct csr_matrix *A, int j, int i)
 int csr_is_symmetric(const struct csr_matrix *A, double rtol, int *row)
 {
     int bad = A->n;
-#pragma omp parallel for schedule(static) reduction(min : bad)
+#pragma omp parallel for schedule(static) reduction(min : bad) if (LS_PAR(A->n))
     for (int i = 0; i < A->n; i++) {
         for (int64_t k = A->rowptr[i]; k < A->rowptr[i + 1]; k++) {
             int j = A->col[k];

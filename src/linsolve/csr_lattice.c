@@ -17,6 +17,7 @@
 #include <stdlib.h>
 
 #include "core/error.h"
+#include "linsolve/linsolve_impl.h"
 
 /* splitmix64: a deterministic, seedable stream independent of libc. */
 static double urand(unsigned long *s)
@@ -95,7 +96,7 @@ static int build(struct lat *g, struct csr_matrix *A)
     int64_t *cnt = sim_malloc(((size_t)n + 1) * sizeof *cnt);
     if (!cnt)
         return SIM_ERR_NOMEM;
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (LS_PAR(n))
     for (int i = 0; i < n; i++) {
         double s;
         cnt[i + 1] = is_surface(g, i) ? 1 : 1 + row_visit(g, i, 0, NULL, NULL, &s);
@@ -111,7 +112,7 @@ static int build(struct lat *g, struct csr_matrix *A)
     for (int i = 0; i <= n; i++)
         A->rowptr[i] = cnt[i];
     free(cnt);
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (LS_PAR(n))
     for (int i = 0; i < n; i++) {
         int64_t k = A->rowptr[i];
         double s = 1.0;

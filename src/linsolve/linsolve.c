@@ -140,7 +140,8 @@ static double checked_norm(int n, const double *v)
 {
     double d = 0.0;
     int bad = 0;
-#pragma omp parallel for schedule(static) reduction(+ : d) reduction(| : bad)
+#pragma omp parallel for schedule(static) reduction(+ : d) reduction(| : bad) \
+    if (LS_PAR(n))
     for (int i = 0; i < n; i++) {
         bad |= !isfinite(v[i]);
         d += v[i] * v[i];
@@ -199,8 +200,12 @@ int linsolve_solve_abs(struct linsolve *s, const struct csr_matrix *A,
     if (!(rnorm <= tolabs))
         return sim_error(SIM_ERR_SOLVER, "%s (%s) did not converge: %d "
                          "iterations (maxIter %d), relative residual %.3e > "
-                         "tolerance %.3e", s->solver->name, s->pc.ops->name,
-                         st->iters, s->maxiter, st->res_rel, tolabs / bnorm);
+                         "tolerance %.3e%s", s->solver->name, s->pc.ops->name,
+                         st->iters, s->maxiter, st->res_rel, tolabs / bnorm,
+                         st->iters < s->maxiter && s->solver->iterative
+                             ? " (stagnated: the true residual stays above "
+                               "the tolerance; is it below rounding level?)"
+                             : "");
     st->converged = 1;
     return SIM_OK;
 }

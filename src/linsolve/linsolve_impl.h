@@ -45,13 +45,13 @@ struct precond {
     const struct precond_ops *ops;
     int n;
     double *dinv;            /* n: inverse of a diagonal (jacobi, dic)     */
-    int64_t *fp;             /* n+1: factor rows (ic0: L, ilu0: L\U)       */
+    int64_t *fp;             /* n+1: factor rows (ic0: L, ilu0: L\U, dic:
+                                strict lower triangle of A)                */
     int32_t *fc;             /* factor columns, sorted within a row         */
     double *fv;              /* factor values                               */
     int64_t *fdiag;          /* n: position of the diagonal in each row     */
     int32_t *pos;            /* n: scatter map, -1 outside the current row  */
     double *y;               /* n: intermediate of the triangular solves    */
-    const struct csr_matrix *A; /* dic applies with A's own entries         */
     int n_cap;
     int64_t nnz_cap;
     double shift;            /* diagonal shift used after a breakdown, or 0 */
@@ -98,6 +98,12 @@ extern const struct solver_ops solver_pcg, solver_bicgstab, solver_cholmod,
 extern const struct solver_ops *const linsolve_solvers[];
 
 #define LINSOLVE_NWORK 8
+
+/* Loops over fewer rows run on one thread: below this, fork/join costs more
+ * than the loop, and on an oversubscribed machine a spinning OpenMP team
+ * made a 2,000-row test 15x slower (29 s instead of 2 s). */
+#define LINSOLVE_OMP_MIN_ROWS 8192
+#define LS_PAR(n) ((n) >= LINSOLVE_OMP_MIN_ROWS)
 
 struct linsolve {
     const struct solver_ops *solver;

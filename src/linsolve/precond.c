@@ -87,7 +87,7 @@ int precond_sorted_copy(struct precond *pc, const struct csr_matrix *A,
         pc->fp[i + 1] = pc->fp[i] + c;
     }
     TRY(precond_reserve(pc, n, pc->fp[n], 1));
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (LS_PAR(n))
     for (int i = 0; i < n; i++) {
         int64_t o = pc->fp[i];
         for (int64_t k = A->rowptr[i]; k < A->rowptr[i + 1]; k++)

@@ -11,7 +11,7 @@ static int setup(struct precond *pc, const struct csr_matrix *A,
                  const double *diag)
 {
     TRY(precond_reserve(pc, A->n, 0, 0));
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (LS_PAR(A->n))
     for (int i = 0; i < A->n; i++)
         pc->dinv[i] = 1.0 / diag[i];
     return SIM_OK;
@@ -19,7 +19,7 @@ static int setup(struct precond *pc, const struct csr_matrix *A,
 
 static void apply(const struct precond *pc, const double *r, double *z)
 {
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (LS_PAR(pc->n))
     for (int i = 0; i < pc->n; i++)
         z[i] = pc->dinv[i] * r[i];
 }

@@ -28,7 +28,7 @@ enum { W_R, W_RH, W_P, W_V, W_Y, W_S, W_Z, W_T };
 static void direction(int n, double beta, double omega, const double *r,
                       const double *v, double *p)
 {
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (LS_PAR(n))
     for (int i = 0; i < n; i++)
         p[i] = r[i] + beta * (p[i] - omega * v[i]);
 }
@@ -38,7 +38,7 @@ static double axpy_norm(int n, double alpha, const double *r, const double *v,
                         double *s)
 {
     double d = 0.0;
-#pragma omp parallel for schedule(static) reduction(+ : d)
+#pragma omp parallel for schedule(static) reduction(+ : d) if (LS_PAR(n))
     for (int i = 0; i < n; i++) {
         s[i] = r[i] - alpha * v[i];
         d += s[i] * s[i];
@@ -51,7 +51,7 @@ static void dot2(int n, const double *t, const double *s, double *ts,
                  double *tt)
 {
     double a = 0.0, b = 0.0;
-#pragma omp parallel for schedule(static) reduction(+ : a, b)
+#pragma omp parallel for schedule(static) reduction(+ : a, b) if (LS_PAR(n))
     for (int i = 0; i < n; i++) {
         a += t[i] * s[i];
         b += t[i] * t[i];
@@ -66,7 +66,7 @@ static double update(int n, double alpha, double omega, const double *y,
                      double *x, double *r)
 {
     double d = 0.0;
-#pragma omp parallel for schedule(static) reduction(+ : d)
+#pragma omp parallel for schedule(static) reduction(+ : d) if (LS_PAR(n))
     for (int i = 0; i < n; i++) {
         x[i] += alpha * y[i] + omega * z[i];
         r[i] = s[i] - omega * t[i];

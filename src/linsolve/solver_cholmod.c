@@ -11,6 +11,7 @@
  * into our code and message. CHOLMOD allocates its factor on every solve.
  */
 #include <limits.h>
+#include <omp.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -101,11 +102,29 @@ static int to_cholmod(const struct csr_matrix *A, cholmod_common *c,
     return rc;
 }
 
+static int factor_solve(struct linsolve *s, const struct csr_matrix *A,
+                        const double *b, double *x);
+
+/* Small systems on one thread: CHOLMOD and its OpenMP BLAS spin up a thread
+ * team per call, which on a busy 2-core machine made the unit tests 20x
+ * slower than serial. */
 static int solve(struct linsolve *s, const struct csr_matrix *A,
                  const double *b, double *x, double tolabs,
                  struct linsolve_stats *st)
 {
     (void)tolabs;
+    int nt = omp_get_max_threads();
+    if (!LS_PAR(A->n))
+        omp_set_num_threads(1);
+    int rc = factor_solve(s, A, b, x);
+    omp_set_num_threads(nt);
+    st->iters = 0;
+    return rc;
+}
+
+static int factor_solve(struct linsolve *s, const struct csr_matrix *A,
+                        const double *b, double *x)
+{
     cholmod_common *c = s->ext;
     int row;
     if (A->nnz > INT_MAX)
@@ -135,7 +154,6 @@ static int solve(struct linsolve *s, const struct csr_matrix *A,
     X = cholmod_solve(CHOLMOD_A, L, B, c);
     TRY_GOTO(rc, check(c, X, "solve"), out);
     memcpy(x, X->x, (size_t)A->n * sizeof(double));
-    st->iters = 0;
 out:
     cholmod_free_dense(&X, c);
     cholmod_free_dense(&B, c);

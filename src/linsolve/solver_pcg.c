@@ -41,7 +41,7 @@ static double residual_diag(int n, double alpha, const double *q,
                             const double *dinv, double *r, double *rz)
 {
     double rr = 0.0, s = 0.0;
-#pragma omp parallel for schedule(static) reduction(+ : rr, s)
+#pragma omp parallel for schedule(static) reduction(+ : rr, s) if (LS_PAR(n))
     for (int i = 0; i < n; i++) {
         double ri = r[i] - alpha * q[i];
         r[i] = ri;
@@ -56,7 +56,7 @@ static double residual_diag(int n, double alpha, const double *q,
 static void direction_diag(int n, double alpha, double beta, const double *r,
                            const double *dinv, double *x, double *p)
 {
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (LS_PAR(n))
     for (int i = 0; i < n; i++) {
         x[i] += alpha * p[i];
         p[i] = dinv[i] * r[i] + beta * p[i];
@@ -65,7 +65,7 @@ static void direction_diag(int n, double alpha, double beta, const double *r,
 
 static void axpy(int n, double alpha, const double *p, double *x)
 {
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (LS_PAR(n))
     for (int i = 0; i < n; i++)
         x[i] += alpha * p[i];
 }
@@ -77,7 +77,7 @@ static int cycle_diag(struct linsolve *s, const struct csr_matrix *A,
     double *r = s->work[W_R], *p = s->work[W_P], *q = s->work[W_Q];
     const double *dinv = s->pc.dinv;
     double rz = 0.0;
-#pragma omp parallel for schedule(static) reduction(+ : rz)
+#pragma omp parallel for schedule(static) reduction(+ : rz) if (LS_PAR(n))
     for (int i = 0; i < n; i++) {
         p[i] = dinv[i] * r[i];
         rz += r[i] * p[i];
@@ -115,7 +115,7 @@ static int cycle_generic(struct linsolve *s, const struct csr_matrix *A,
         if (!(pq > 0.0) || !(rz > 0.0))
             return breakdown(*iters, pq, rz);
         double alpha = rz / pq, rr = 0.0;
-#pragma omp parallel for schedule(static) reduction(+ : rr)
+#pragma omp parallel for schedule(static) reduction(+ : rr) if (LS_PAR(n))
         for (int i = 0; i < n; i++) {
             x[i] += alpha * p[i];
             r[i] -= alpha * q[i];
@@ -127,7 +127,7 @@ static int cycle_generic(struct linsolve *s, const struct csr_matrix *A,
         pc->ops->apply(pc, r, z);
         double rz_new = vec_dot(n, r, z), beta = rz_new / rz;
         rz = rz_new;
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (LS_PAR(n))
         for (int i = 0; i < n; i++)
             p[i] = z[i] + beta * p[i];
     }

@@ -6,6 +6,7 @@
 #include "linsolve_testutil.h"
 
 #include <nvector/nvector_serial.h>
+#include <omp.h>
 #include <sundials/sundials_context.h>
 
 #include "linsolve/sunlinsol_ppe.h"
@@ -111,6 +112,40 @@ static void test_fused_path_equals_generic(void **state)
     }
 }
 
+/* The OpenMP paths (systems of >= LINSOLVE_OMP_MIN_ROWS rows) against one
+ * thread: same iterations within 2 (reductions round differently), and both
+ * answers within the tolerance of each other. */
+static void test_threads_match_one_thread(void **state)
+{
+    (void)state;
+    struct sys big;
+    tu_lattice(&big, 3, 24, 2.1, 0); /* 13,824 rows */
+    assert_true(big.A.n >= LINSOLVE_OMP_MIN_ROWS);
+    int n = big.A.n, nt = omp_get_max_threads();
+    const char *combos[][2] = {{"pcg", "jacobi"}, {"pcg", "dic"},
+                               {"bicgstab", "jacobi"}};
+    for (int k = 0; k < 3; k++) {
+        struct linsolve *ls = make(combos[k][0], combos[k][1], 1e-10, 1000);
+        struct linsolve_stats s1, sn;
+        double *x1 = calloc((size_t)n, sizeof *x1);
+        double *xn = calloc((size_t)n, sizeof *xn);
+        omp_set_num_threads(1);
+        assert_int_equal(linsolve_solve(ls, &big.A, big.b, x1, &s1), SIM_OK);
+        omp_set_num_threads(nt > 1 ? nt : 2);
+        assert_int_equal(linsolve_solve(ls, &big.A, big.b, xn, &sn), SIM_OK);
+        omp_set_num_threads(nt);
+        assert_true(abs(s1.iters - sn.iters) <= 2);
+        double e = 0.0;
+        for (int i = 0; i < n; i++)
+            e += (x1[i] - xn[i]) * (x1[i] - xn[i]);
+        assert_true(sqrt(e) <= 1e-6 * tu_norm(n, x1));
+        free(x1);
+        free(xn);
+        linsolve_free(ls);
+    }
+    tu_free(&big);
+}
+
 static void test_warm_start_from_exact_solution(void **state)
 {
     (void)state;
@@ -179,6 +214,26 @@ static void test_nonconvergence_is_an_error(void **state)
         /* x is the last iterate: its residual is the one reported. */
         double r = tu_resnorm(&s2.A, s2.b, x) / tu_norm(n, s2.b);
         assert_float_equal(r, st.res_rel, 1e-12);
+        free(x);
+        linsolve_free(ls);
+    }
+}
+
+/* A tolerance below rounding level: an error after bounded work, no hang. */
+static void test_unreachable_tolerance_is_an_error(void **state)
+{
+    (void)state;
+    const char *combos[][2] = {{"pcg", "jacobi"}, {"bicgstab", "ilu0"}};
+    for (int k = 0; k < 2; k++) {
+        struct linsolve *ls = make(combos[k][0], combos[k][1], 1e-19, 400);
+        struct linsolve_stats st;
+        double *x = calloc((size_t)s2.A.n, sizeof *x);
+        assert_int_equal(linsolve_solve(ls, &s2.A, s2.b, x, &st),
+                         SIM_ERR_SOLVER);
+        assert_true(st.iters <= 400);
+        assert_false(st.converged);
+        /* The last iterate is still a good answer. */
+        assert_true(st.res_rel < 1e-12);
         free(x);
         linsolve_free(ls);
     }
@@ -559,9 +614,11 @@ int main(void)
         cmocka_unit_test(test_pcg_jacobi_matches_cholmod),
         cmocka_unit_test(test_ic0_fewer_iterations_than_jacobi),
         cmocka_unit_test(test_fused_path_equals_generic),
+        cmocka_unit_test(test_threads_match_one_thread),
         cmocka_unit_test(test_warm_start_from_exact_solution),
         cmocka_unit_test(test_warm_start_off_ignores_guess),
         cmocka_unit_test(test_nonconvergence_is_an_error),
+        cmocka_unit_test(test_unreachable_tolerance_is_an_error),
         cmocka_unit_test(test_bicgstab_nonsymmetric_vs_dense_lu),
         cmocka_unit_test(test_ic0_breakdown_falls_back_to_shift),
         cmocka_unit_test(test_unsorted_columns_same_answer),
