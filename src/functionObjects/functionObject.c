@@ -143,6 +143,17 @@ static int create_entry(const struct dict *fd, const char *key,
                           "{ type ...; }", key);
     TRY(dict_get_dict(fd, key, &d));
     TRY(dict_get_bool_or(d, "enabled", 1, enabled));
+    /* `cloud fluid|dem;` (optional): in a coupled case both programs read
+     * the same controlDict; an entry for the other program's cloud is
+     * skipped like a disabled one, its type unchecked. */
+    const char *cloud;
+    TRY(dict_get_string_or(d, "cloud", "", &cloud));
+    if (cloud[0] && s->cloud_name && strcmp(cloud, s->cloud_name) != 0) {
+        *enabled = 0;
+        for (int i = 0; i < dict_size(d); i++)
+            dict_mark_used(d, dict_key_at(d, i));
+        return SIM_OK;
+    }
     TRY(dict_get_string(d, "type", &type));
     e->name = key;
     e->ops = find_type(tables, type);
