@@ -214,6 +214,13 @@ int couple_dem_recv(struct couple_dem *cd, struct dem *d)
                        "demSolid", f.time, d->t);
     if (!rc)
         rc = couple_dem_apply(cd, d, &fs);
+    /* Guard (models.h): every 100 intervals, from the second on (the
+     * interval is known then). The DEM sub-steps the drag anyway, so this
+     * only tells the user why its step count is what it is. */
+    if (!rc && cd->exchanges % 100 == 1 && d->n > 0 && cd->cs.drag->coeff)
+        coupling_guard_relaxation(cd->cs.drag, &cd->fl, (int)d->n, cd->eps,
+                                  cd->uf, d->v, cd->d, d->law.c.rho,
+                                  f.time - cd->fluid_time, NULL);
     cd->fluid_time = f.time;
     cd->exchanges++;
     int rc2 = channel_recv_done(cd->ch);
