@@ -227,6 +227,33 @@ int couple_dem_recv(struct couple_dem *cd, struct dem *d)
     return rc ? rc : rc2;
 }
 
+void couple_dem_totals(const struct couple_dem *cd, const struct dem *d,
+                       double drag[3], double press[3], double *slip_max,
+                       double *eps_min, double *wet)
+{
+    size_t n = cd->n < d->n ? cd->n : d->n;
+    double smax = 0, emin = 1, nw = 0;
+    for (int c = 0; c < 3; c++)
+        drag[c] = press[c] = 0;
+    for (size_t k = 0; k < n; k++) {
+        double s2 = 0;
+        for (int c = 0; c < 3; c++) {
+            drag[c] += cd->Fsend[3 * k + c];
+            press[c] += cd->fext[3 * k + c];
+            double du = cd->uf[3 * k + c] - d->v[3 * k + c];
+            s2 += du * du;
+        }
+        if (!cd->wet[k])
+            continue;
+        nw++;
+        smax = fmax(smax, sqrt(s2));
+        emin = fmin(emin, cd->eps[k]);
+    }
+    *slip_max = smax;
+    *eps_min = emin;
+    *wet = nw;
+}
+
 void couple_dem_close(struct couple_dem *cd, int rc)
 {
     if (cd->ch)

@@ -85,6 +85,22 @@ int couple_dem_send(struct couple_dem *cd, struct dem *d, long step,
 /* Receive the fluid state; its time must be d->t. */
 int couple_dem_recv(struct couple_dem *cd, struct dem *d);
 void couple_dem_close(struct couple_dem *cd, int rc);
+
+/* Totals of the last interval: drag sum_k F_bar^d_k (eq. 25) and the
+ * pressure-gradient / buoyancy force sum_k F_ext,k [N]; largest slip
+ * |u_k - v_k| [m/s], smallest eps_k, number of wet grains. */
+void couple_dem_totals(const struct couple_dem *cd, const struct dem *d,
+                       double drag[3], double press[3], double *slip_max,
+                       double *eps_min, double *wet);
+
+/* The same as function-object values (couple_fo.c: type couplingForces;
+ * demSolid adds couple_fo_table to its tables and these to its scene). */
+#define COUPLE_DEM_NVALUES 5
+struct fo_value;
+struct fo_ops;
+void couple_dem_values(const struct couple_dem *cd, const struct dem *d,
+                       struct fo_value *v);   /* COUPLE_DEM_NVALUES */
+extern const struct fo_ops *const couple_fo_table[];
 void couple_dem_free(struct couple_dem *cd);
 
 #endif

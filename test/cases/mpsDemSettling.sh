@@ -6,6 +6,7 @@
 #   balance slip at its porosity eps_k = 0.9883 (0.3357 m/s; measured
 #   -0.4 % over 0.2-0.6 s in the tutorial) and within 15 % of the
 #   single-sphere 0.343 m/s (E1-14, absolute);
+#   the couplingForces function object gives the buoyancy V rho_f g (1e-6);
 #   a case without system/couplingDict runs demSolid alone (no channel).
 # MPSFLUID / DEMSOLID override the programs (default bin/).
 ROOT="$(cd "$(dirname "$0")/../.." && pwd)"
@@ -13,7 +14,7 @@ TUT="$ROOT/tutorials/mpsDem/singleGrainSettling"
 MPSFLUID=${MPSFLUID:-$ROOT/bin/mpsFluid}
 DEMSOLID=${DEMSOLID:-$ROOT/bin/demSolid}
 TMP="$(mktemp -d)"
-trap 'rm -rf "$TMP"' EXIT
+trap '[ -n "$KEEP" ] || rm -rf "$TMP"' EXIT
 export OMP_NUM_THREADS=1
 fails=0
 pass() { echo "PASS $1"; }
@@ -51,8 +52,16 @@ awk -v m="$m" 'BEGIN { exit !(m > 0 && m / 0.3357 - 1 < 0.03 && 1 - m / 0.3357 <
     || fail mpsDemSettling_balance "mean speed $m m/s, balance 0.3357 m/s (3 %)"
 awk -v m="$m" 'BEGIN { d = m / 0.343 - 1; exit !(d < 0.15 && d > -0.15) }' \
     && pass mpsDemSettling_absolute || fail mpsDemSettling_absolute "$m m/s vs 0.343 (15 %)"
-# uncoupled: the same case without couplingDict, demSolid alone
+# couplingForces function object: Model B buoyancy is exactly V rho_f g
+f="$c/postProcessing/grain/0/couplingForces.dat"
+awk '!/^#/ { n++; b = $6 } END { V = 4 / 3 * 3.14159265358979 * 0.00135^3
+     exit !(n > 10 && (b / (V * 1000 * 9.81) - 1)^2 < 1e-12) }' "$f" 2>/dev/null \
+    && pass mpsDemSettling_buoyancy \
+    || fail mpsDemSettling_buoyancy "couplingForces.dat: $(tail -1 "$f" 2>&1)"
+# uncoupled: the same case without couplingDict, demSolid alone (the
+# coupling-only function objects are switched off with 'cloud none')
 rm "$c/system/couplingDict"
+sed -i 's/cloud  *dem;/cloud none;/' "$c/system/controlDict"
 sed -i 's/^endTime .*/endTime 0.01;/' "$c/system/controlDict"
 if (cd "$c" && timeout 60 "$DEMSOLID" > log.demSolid.alone 2>&1) \
    && ! grep -qi 'channel\|coupling' "$c/log.demSolid.alone"; then

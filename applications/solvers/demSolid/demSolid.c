@@ -40,6 +40,7 @@ struct solid {
     struct dict *coupling, *transport;  /* coupled runs only            */
     int coupled;
     struct couple_dem cd;
+    struct fo_value values[COUPLE_DEM_NVALUES];
     struct run_time rt;
     struct dem d;
     struct dem_solution sol;
@@ -127,12 +128,17 @@ static void refresh_scene(struct solid *s)
         .dim = s->dim, .cloud_name = "dem", .cloud = &s->cloud,
         .spacing = 2 * d->rmax, .patch_names = s->patch_ptrs,
         .npatches = d->npatches, .solver = d};
+    if (s->coupled) {
+        couple_dem_values(&s->cd, d, s->values);
+        s->scene.values = s->values;
+        s->scene.nvalues = COUPLE_DEM_NVALUES;
+    }
 }
 
 static int create_functions(struct solid *s)
 {
     static const struct fo_ops *const *const tables[] = {
-        fo_generic_table, dem_fo_table, NULL};
+        fo_generic_table, dem_fo_table, couple_fo_table, NULL};
     refresh_scene(s);
     return fo_list_create(s->rt.functions, tables, &s->scene,
                           s->app.case_abs, s->rt.start_time, s->rt.precision,
