@@ -9,7 +9,7 @@
  *   f_ext,i = A: -f_A,i/(rho eps_i)   B: -f_A,i/(rho eps_i^2) + g(1/eps_i - 1)
  *
  * Time levels (A0-15, DEM first): the fields sent at t^m are interpolated
- * with the porosity eps^m the fluid used in its last step; the DEM answers
+ * with the porosity eps^m of both phases' positions at t^m; the DEM answers
  * with its state at t^{m+1}; eps^{m+1} and f_A are then computed at the new
  * grain positions and held frozen through mps_step().
  */
@@ -192,10 +192,14 @@ int couple_fluid_grain_fields(struct couple_fluid *cf, struct mps_solver *s)
     coupling_pairs_invalidate(&cf->pairs);
     TRY(coupling_pairs_update(&cf->pairs, cf->dim, cf->re, 0.0, cf->ng,
                               cf->xg, P->n, P->x, NULL));
-    for (int i = 0; i < P->n; i++) {
+    /* eps^m at the current positions of both phases (A.10 step 2), not
+     * the values the last step used (computed before the particles moved):
+     * then a restart, which starts from the positions alone, repeats the
+     * continuous run. */
+    TRY(coupling_porosity(&cf->pairs, cf->Vg, cf->cs.eps_min, cf->eps, NULL,
+                          NULL));
+    for (int i = 0; i < P->n; i++)
         cf->mask[i] = P->type[i] != MPS_DUMMY;
-        cf->eps[i] = 1.0 / P->inv_eps[i];
-    }
     const double *gp = NULL;
     /* Model A: consistent gradient (A0-14) on the solver's last list; its
      * weights are one step old (positions moved by dt u), and before the
