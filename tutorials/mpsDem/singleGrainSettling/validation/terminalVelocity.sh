@@ -28,3 +28,12 @@ END {
     printf "balance slip at eps_k = 1:      %.4f m/s  (mean speed %+.2f %%)\n", b1, 100 * (m / b1 - 1)
     printf "balance slip at eps_k = 0.9883: %.4f m/s  (mean speed %+.2f %%)\n", b2, 100 * (m / b2 - 1)
 }'
+# E1-14 as stated: drag balance and slip from the couplingForces function
+# object (columns: time, drag xyz, pressure xyz, slip, eps_k, wet)
+f=postProcessing/grain/0/couplingForces.dat
+[ -f "$f" ] && awk -v t0="$t0" '!/^#/ && $1 >= t0 { n++; s += $3 / $9; sl += $8; e += $9 }
+END {
+    V = 4 / 3 * 3.14159265358979 * 0.00135^3; W = 1500 * V * 9.81
+    printf "mean F^d/eps_k after %s s: %.5e N, submerged weight %.5e N (%+.2f %%)\n", t0, s / n, W, 100 * (s / n / W - 1)
+    printf "mean slip |u_k - v_k|: %.4f m/s at mean eps_k %.4f (%d rows)\n", sl / n, e / n, n
+}' "$f"
