@@ -69,10 +69,6 @@ int couple_enabled(const struct dict *coupling, int *on)
         return SIM_OK;
     TRY(dict_get_bool_or(coupling, "coupled", 1, on));
     TRY(dict_get_word_or(coupling, "scheme", schemes, 0, &idx));
-    if (*on && idx == 1)
-        return dict_error(coupling, "scheme", SIM_ERR_DICT, "scheme "
-                          "concurrent (one-step lag) is not implemented yet; "
-                          "use sequential (METHODS.md A.8, A0-15)");
     return SIM_OK;
 }
 

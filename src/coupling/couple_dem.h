@@ -52,9 +52,10 @@ struct couple_dem {
 };
 
 /* Whether a case is coupled: system/couplingDict present (coupling may be
- * NULL) and `coupled` (default yes). `scheme sequential;` is the only
- * scheme so far; `concurrent` is refused with a message. Both programs
- * call this before anything of the other phase is allocated. */
+ * NULL) and `coupled` (default yes); `scheme sequential|concurrent` is
+ * checked here (the DEM side does the same in both, couple_fluid.h says
+ * what differs). Both programs call this before anything of the other
+ * phase is allocated. */
 int couple_enabled(const struct dict *coupling, int *on);
 
 /* Settings from system/couplingDict; fluid density and viscosity from

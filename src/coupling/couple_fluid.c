@@ -20,6 +20,7 @@
 #include <string.h>
 #include <time.h>
 
+#include "core/dict.h"
 #include "core/error.h"
 #include "core/log.h"
 #include "coupling/channel.h"
@@ -72,7 +73,9 @@ int couple_fluid_init(struct couple_fluid *cf, const struct dict *coupling,
 {
     struct mps_particles *P = &s->P;
     memset(cf, 0, sizeof *cf);
+    static const char *const schemes[] = { "sequential", "concurrent", NULL };
     TRY(coupling_settings_read(coupling, &cf->cs));
+    TRY(dict_get_word_or(coupling, "scheme", schemes, 0, &cf->concurrent));
     cf->dim = P->dim;
     cf->dp = s->dp;
     cf->re = cf->cs.radius * s->dp;
@@ -275,6 +278,19 @@ int couple_fluid_exchange(struct couple_fluid *cf, struct mps_solver *s,
                           long step, double t, double dt)
 {
     double tol = 1e-6 * dt;
+    if (cf->concurrent) {
+        /* DEM state at t (drag of the interval before), then our state at
+         * t: the DEM advances while we step */
+        TRY(receive_dem(cf, t, tol));
+        if (cf->exchanges == 0)
+            for (int k = 0; k < cf->ng; k++)
+                cf->eps_k[k] = 1.0;
+        TRY(couple_fluid_update(cf, s));
+        TRY(couple_fluid_grain_fields(cf, s));
+        TRY(send_fluid(cf, step, t));
+        cf->exchanges++;
+        return SIM_OK;
+    }
     if (cf->exchanges == 0) {
         /* initial state at t: porosity eps^m before the first send */
         TRY(receive_dem(cf, t, tol));

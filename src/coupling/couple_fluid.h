@@ -15,6 +15,13 @@
  *   mps_step()
  * The first exchange first receives the DEM's initial state (at t^0).
  *
+ * `scheme concurrent;` (one-step lag): the exchange before the step
+ * t^m -> t^{m+1} receives the DEM state at t^m (positions and the drag of
+ * the interval before), computes eps^m and f_A from it, then sends the
+ * fluid state at t^m; the DEM advances to t^{m+1} while the fluid steps,
+ * so both programs compute at once. The DEM side is the same in both
+ * schemes.
+ *
  * The same work without a channel (tests, a single program that owns both
  * phases): couple_fluid_set_grains() + couple_fluid_update() replace the
  * receive, couple_fluid_grain_fields() the send.
@@ -68,6 +75,7 @@ struct couple_fluid {
     /* book-keeping */
     long n_clamped;             /* porosity clamps at the last update    */
     int n_orphan;               /* grains whose reaction found no fluid  */
+    int concurrent;             /* scheme concurrent (one-step lag)      */
     long exchanges;
     double wall;                /* seconds spent here (not in the wait)  */
     double wait;                /* seconds waiting for the DEM side      */
