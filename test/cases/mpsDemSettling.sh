@@ -24,6 +24,10 @@ fail() { echo "FAIL $1: $2"; fails=$((fails + 1)); }
 for p in "$MPSFLUID" "$DEMSOLID" "$ROOT/bin/genParticles"; do
     [ -x "$p" ] || { fail mpsDemSettling "$p not built"; exit 1; }
 done
+if ! grep -q couple_fluid_exchange "$MPSFLUID"; then
+    fail mpsDemSettling "$MPSFLUID has no coupling hooks (couple_fluid_exchange): wire applications/solvers/mpsFluid (issue 6)"
+    exit 1
+fi
 c="$TMP/case"
 cp -r "$TUT" "$c"
 sed -i 's/^endTime .*/endTime 0.35;/; s/^timeout .*/timeout 30;/' \
