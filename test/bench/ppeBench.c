@@ -14,7 +14,8 @@
  * (STREAM counting, no write-allocate): 12 nnz + 8 n x 13 streams (rowptr;
  * SpMV p, q; residual r r/w, q, dinv; direction x r/w, p r/w, r, dinv).
  *
- *   ppeBench [--quick] [--cholmod] [--reps N] [--case DIM:NSIDE:RE ...]
+ *   ppeBench [--quick] [--cholmod] [--reps N] [--only SOLVER:PRECOND]
+ *            [--case DIM:NSIDE:RE ...]
  */
 #include <math.h>
 #include <omp.h>
@@ -132,6 +133,15 @@ static void run_solver(const char *solver, const char *pc,
     linsolve_free(ls);
 }
 
+static const char *only; /* --only SOLVER:PRECOND, or NULL for all */
+
+static int wanted(const char *solver, const char *pc)
+{
+    char buf[64];
+    snprintf(buf, sizeof buf, "%s:%s", solver, pc);
+    return !only || !strcmp(only, buf);
+}
+
 static void run_case(const struct bcase *c, int reps, int cholmod,
                      double stream)
 {
@@ -150,7 +160,9 @@ static void run_case(const struct bcase *c, int reps, int cholmod,
                                       {"pcg", "ic0"}, {"bicgstab", "jacobi"},
                                       {"bicgstab", "ilu0"}, {"hypre", "none"}};
     for (size_t k = 0; k < sizeof combos / sizeof combos[0]; k++)
-        run_solver(combos[k][0], combos[k][1], &A1, b1, &A2, b2, reps, stream);
+        if (wanted(combos[k][0], combos[k][1]))
+            run_solver(combos[k][0], combos[k][1], &A1, b1, &A2, b2, reps,
+                       stream);
     if (cholmod)
         run_solver("cholmod", "none", &A1, b1, &A2, b2, 1, stream);
     csr_free(&A1);
@@ -168,6 +180,8 @@ int main(int argc, char **argv)
             quick = 1;
         else if (!strcmp(argv[i], "--cholmod"))
             cholmod = 1;
+        else if (!strcmp(argv[i], "--only") && i + 1 < argc)
+            only = argv[++i];
         else if (!strcmp(argv[i], "--reps") && i + 1 < argc)
             reps = atoi(argv[++i]);
         else if (!strcmp(argv[i], "--case") && i + 1 < argc && nc < 16) {
@@ -179,6 +193,7 @@ int main(int argc, char **argv)
             nc++;
         } else {
             fprintf(stderr, "usage: ppeBench [--quick] [--cholmod] [--reps N] "
+                            "[--only SOLVER:PRECOND] "
                             "[--case DIM:NSIDE:RE ...]\n");
             return 2;
         }
