@@ -3,6 +3,8 @@
 # (`data` defaults to the shared data seen from tutorials/mpsFluid/<case>).
 if (!exists("data")) data = '../../../../shared/data/kleefsman_spheric2'
 exp = data.'/spheric_test2_marin_exp.csv'
+# a restarted run writes postProcessing/<name>/<startTime>/: join them
+fo(n, f) = sprintf("< for d in $(ls postProcessing/%s | sort -g); do cat postProcessing/%s/$d/%s; done", n, n, f)
 set terminal pngcairo size 1200,800 noenhanced
 set output 'validation/damBreakObstacle.png'
 set datafile separator ' ,'
@@ -11,11 +13,11 @@ set xrange [0:6]; set xlabel 't [s]'
 do for [k=1:4] {
     set ylabel sprintf('H%d [m]', k)
     plot exp u 1:(column(9+k)) every ::1 w l lc rgb 'gray' t 'MARIN', \
-         'postProcessing/heights/0/height.dat' u 1:(column(k+1)) w l lw 2 t 'mpsFluid'
+         fo('heights', 'height.dat') u 1:(column(k+1)) w l lw 2 t 'mpsFluid'
 }
 set ylabel 'P1 [Pa]'
 plot exp u 1:2 every ::1 w l lc rgb 'gray' t 'MARIN', \
-     'postProcessing/pressure/0/p.dat' u 1:2 w l lw 2 t 'mpsFluid'
+     fo('pressure', 'p.dat') u 1:2 w l lw 2 t 'mpsFluid'
 set ylabel 'F_x on the box [N]'
-plot 'postProcessing/load/0/forces.dat' u 1:2 w l lw 2 t 'mpsFluid'
+plot fo('load', 'forces.dat') u 1:2 w l lw 2 t 'mpsFluid'
 unset multiplot
