@@ -10,6 +10,12 @@
  *         postProcessing/usedParameters
  *
  * Every key: mpsFluid.reference beside this file.
+ *
+ * Coupled (system/couplingDict present, `coupled yes`; runTandem mpsFluid
+ * demSolid): before each step the fluid state at the grains is sent and the
+ * DEM state at the end of the step received; porosity and the reaction of
+ * the grains enter the step through the solver's inv_eps and f_ext hooks
+ * (couple_fluid.h). Output gains the field "porosity".
  */
 #include <math.h>
 #include <stdio.h>
@@ -23,6 +29,8 @@
 #include "core/error.h"
 #include "core/log.h"
 #include "core/time.h"
+#include "coupling/couple_dem.h"
+#include "coupling/couple_fluid.h"
 #include "functionObjects/functionObject.h"
 #include "io/vtu.h"
 #include "mps/functionObjects/mps_functionObjects.h"
@@ -45,7 +53,10 @@ struct fluid {
     struct fo_list *fos;
     struct fo_scene scene;
     struct vtu_cloud cloud;
-    struct vtu_field fields[8];
+    struct vtu_field fields[9];
+    struct dict *coupling;          /* coupled runs only                 */
+    int coupled;
+    struct couple_fluid cf;
 };
 
 static int create_time(struct fluid *f)
@@ -124,6 +135,24 @@ static int copy_cloud(struct fluid *f, const struct vtu_cloud *c,
     return SIM_OK;
 }
 
+/* system/couplingDict: nothing of the grains exists without it. */
+static int create_coupling(struct fluid *f)
+{
+    char path[4200];
+    if (access(app_path(&f->app, "system/couplingDict", path, sizeof path),
+               F_OK) == 0)
+        TRY(app_read_dict(&f->app, "system/couplingDict", &f->coupling));
+    TRY(couple_enabled(f->coupling, &f->coupled));
+    if (!f->coupled)
+        return SIM_OK;
+    if (f->rt.adjust)
+        return dict_error(f->control, "adjustTimeStep", SIM_ERR_DICT,
+                          "a coupled run needs a fixed deltaT, the same as "
+                          "demSolid's (the coupling interval): set "
+                          "adjustTimeStep no");
+    return couple_fluid_init(&f->cf, f->coupling, &f->s);
+}
+
 static int create_fluid(struct fluid *f)
 {
     char rel[256], path[4400];
@@ -160,6 +189,7 @@ static int create_fluid(struct fluid *f)
     log_info("Fluid cloud %s: %d particles, %d-D, dp = %g m", rel, P.n,
              f->dim, f->dp);
     TRY(mps_solver_init(&f->s, &P, &S, f->dp, ls));
+    TRY(create_coupling(f));
     return mps_check_setup(&f->s, f->rt.delta_t, f->rt.adjust,
                            f->rt.adjust ? f->rt.max_co : 0.2);
 }
@@ -178,8 +208,15 @@ static void refresh_scene(struct fluid *f)
         { "freeSurface", VTU_UINT8, 1, P->fs },
     };
     memcpy(f->fields, fl, sizeof fl);
+    int nf = 8;
+    if (f->coupled) {
+        for (int i = 0; i < P->n; i++)
+            f->cf.eps[i] = 1.0 / P->inv_eps[i];
+        f->fields[nf++] = (struct vtu_field){ "porosity", VTU_FLOAT64, 1,
+                                              f->cf.eps };
+    }
     f->cloud = (struct vtu_cloud){ .n = (size_t)P->n, .points = P->x,
-                                   .nfields = 8, .fields = f->fields,
+                                   .nfields = nf, .fields = f->fields,
                                    .time = f->rt.value };
     mps_wall_forces(&f->s, f->npatches, f->force);
     int nv = 0;
@@ -250,12 +287,31 @@ static int failed(struct fluid *f, int rc)
     return sim_error(rc, "%s", msg);
 }
 
+/* The peer failed, a signal came, or the intervals disagree: the fluid
+ * is at a complete time (the exchange precedes the step), so write it and
+ * tell the peer why we leave. */
+static int coupled_failure(struct fluid *f, int rc)
+{
+    char msg[1024];
+    snprintf(msg, sizeof msg, "%s", sim_error_message());
+    if (f->rt.step > 0 && write_fields(f) == SIM_OK)
+        log_info("Last complete state (t = %s s) written to %s/fluid.vtu",
+                 f->rt.name, f->rt.name);
+    couple_fluid_close(&f->cf, rc);
+    return sim_error(rc, "%s", msg);
+}
+
 static int step(struct fluid *f)
 {
     struct mps_solver *s = &f->s;
     double dt = f->rt.adjust ? mps_propose_dt(s, f->rt.max_co) : f->rt.delta_t;
     time_set_step(&f->rt, dt);
-    int rc = mps_step(s, f->rt.dt);
+    int rc = SIM_OK;
+    if (f->coupled
+        && (rc = couple_fluid_exchange(&f->cf, s, f->rt.step, f->rt.value,
+                                       f->rt.dt)))
+        return coupled_failure(f, rc);
+    rc = mps_step(s, f->rt.dt);
     time_increment(&f->rt);
     if (rc)
         return failed(f, rc);
@@ -306,6 +362,8 @@ static void final_stats(const struct fluid *f)
 
 static void cleanup(struct fluid *f)
 {
+    couple_fluid_free(&f->cf);
+    dict_free(f->coupling);
     fo_list_free(f->fos);
     mps_solver_free(&f->s);
     dict_free(f->control);
@@ -331,10 +389,25 @@ int main(int argc, char **argv)
     dict_warn_unused(f.schemes);
     dict_warn_unused(f.solution);
     dict_warn_unused(f.transport);
+    if (f.coupled) {
+        if ((rc = couple_fluid_open(&f.cf, f.coupling, f.app.case_abs,
+                                    "mpsFluid")))
+            app_fatal(&f.app, rc);
+        dict_warn_unused(f.coupling);
+    }
     log_info("\nStarting time loop\n");
     while (time_running(&f.rt))
-        if ((rc = step(&f)))
+        if ((rc = step(&f))) {
+            if (f.coupled)
+                couple_fluid_close(&f.cf, rc);
             app_fatal(&f.app, rc);
+        }
+    if (f.coupled) {
+        log_info("Coupling: %ld exchanges, %.3g s in the glue, %.3g s "
+                 "waiting for demSolid", f.cf.exchanges, f.cf.wall,
+                 f.cf.wait);
+        couple_fluid_close(&f.cf, SIM_OK);
+    }
     final_stats(&f);
     cleanup(&f);
     return app_end(&f.app);
