@@ -2,10 +2,14 @@
  * fo_front.c — leading edge of the fluid (METHODS.md A.12.2 [P], fronts of
  * Figs. 11, 13 and 21 of S000):
  *
- *     X(t) = max { (x_i - o) . e : i fluid, n_i/n0 >= minNumberDensity }
+ *     X(t) = max { (x_i - o) . e : i fluid, n_i/n0 >= minNumberDensity,
+ *                                  z_i - z_o <= maxHeight }
  *
- * with e = direction/|direction| and o = origin. The number-density
- * threshold ignores isolated splash ahead of the front. X is the centre of
+ * with e = direction/|direction|, o = origin and z the vertical coordinate
+ * (y in 2-D). The number-density threshold ignores isolated splash ahead
+ * of the front; maxHeight (none by default) keeps only the fluid near the
+ * floor, the surge that Martin and Moyce tracked, not a jet thrown forward
+ * above it. X is the centre of
  * the leading particle: the edge of the volume it represents lies dp/2
  * further (a column of width a filled with particles reads X = a - dp/2).
  *
@@ -24,6 +28,7 @@
  *   direction        (1 0 0);   // e, normalised here
  *   origin           (0 0 0);   // o [m]
  *   minNumberDensity 0.5;       // n/n0 threshold
+ *   maxHeight        0.02;      // [m] above o, optional (default: none)
  *   referenceLength  0.057;     // a [m], optional: adds the column Z
  *   gravity          9.81;      // |g| [m/s^2], optional (with
  *                               // referenceLength): adds the column T
@@ -45,6 +50,7 @@ struct front {
     char *name;
     double e[3], o[3];
     double nd_min;
+    double zmax;    /* maxHeight, or INFINITY */
     double a, g;    /* 0 when not given */
     int warned;
 };
@@ -84,6 +90,10 @@ static int read_scales(const struct dict *d, struct front *fr)
         return dict_error(d, "minNumberDensity", SIM_ERR_DICT,
                           "minNumberDensity (n/n0) must be >= 0, got %g",
                           fr->nd_min);
+    TRY(dict_get_scalar_or(d, "maxHeight", INFINITY, &fr->zmax));
+    if (!(fr->zmax > 0))
+        return dict_error(d, "maxHeight", SIM_ERR_DICT, "maxHeight (above "
+                          "the origin) must be positive, got %g", fr->zmax);
     if (dict_has(d, "referenceLength")) {
         TRY(dict_get_scalar(d, "referenceLength", &fr->a));
         if (!(fr->a > 0) || !isfinite(fr->a))
@@ -133,6 +143,9 @@ static int header(void *data, const struct fo_scene *s, FILE *f)
     fprintf(f, "# front: max over fluid particles with n/n0 >= %g of "
             "(x - (%.9g %.9g %.9g)) . (%.9g %.9g %.9g) [m]\n", fr->nd_min,
             fr->o[0], fr->o[1], fr->o[2], fr->e[0], fr->e[1], fr->e[2]);
+    if (isfinite(fr->zmax))
+        fprintf(f, "# only particles at most %.9g m above the origin\n",
+                fr->zmax);
     if (fr->a > 0)
         fprintf(f, "# Z = X/a with a = %.9g m\n", fr->a);
     if (fr->g > 0)
@@ -142,9 +155,10 @@ static int header(void *data, const struct fo_scene *s, FILE *f)
     return SIM_OK;
 }
 
-static double leading_edge(const struct mps_fo_fields *f,
+static double leading_edge(const struct mps_fo_fields *f, int dim,
                            const struct front *fr)
 {
+    int z = mps_fo_vertical(dim);
     double m = -DBL_MAX;
     long n = (long)f->n;
 #pragma omp parallel for reduction(max : m) schedule(static)
@@ -152,6 +166,8 @@ static double leading_edge(const struct mps_fo_fields *f,
         if (f->type[i] != 0 || !(f->nd[i] >= fr->nd_min))
             continue;
         const double *x = f->x + 3 * i;
+        if (x[z] - fr->o[z] > fr->zmax)
+            continue;
         double v = (x[0] - fr->o[0]) * fr->e[0] + (x[1] - fr->o[1]) * fr->e[1]
                    + (x[2] - fr->o[2]) * fr->e[2];
         m = v > m ? v : m;
@@ -164,7 +180,7 @@ static int execute(void *data, const struct fo_scene *s, FILE *out)
     struct front *fr = data;
     struct mps_fo_fields f;
     TRY(mps_fo_fields_get(NULL, s, FIELDS, &f));
-    double X = leading_edge(&f, fr);
+    double X = leading_edge(&f, s->dim, fr);
     if (isnan(X) && !fr->warned) {
         fr->warned = 1;
         log_warn("%s: no fluid particle with n/n0 >= %g at time %g; the "

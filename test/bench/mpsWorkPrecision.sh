@@ -27,7 +27,6 @@ for N in $RES; do
       c="$TMP/a${N}_$1_$tol"
       cp -r "$ROOT/tutorials/mpsFluid/damBreak2D" "$c"
       set_key "$c/system/particleDict" dp "$dp"
-      set_key "$c/system/controlDict" columnWidth "$dp"
       set_key "$c/system/mpsSchemes" reNumberDensity "$2"
       set_key "$c/system/mpsSchemes" reGradient "$3"
       set_key "$c/system/mpsSchemes" reLaplacian "$4"

@@ -30,7 +30,7 @@ awk -v v=$(val rmsZ) -v n=$(val nZ) 'BEGIN { exit !(v >= 0 && v < 0.20 && n >= 1
     && pass damBreak2D_front || fail damBreak2D_front "rms Z $(val rmsZ) over $(val nZ) points"
 awk -v v=$(val rmsH) -v n=$(val nH) 'BEGIN { exit !(v >= 0 && v < 0.05 && n >= 10) }' \
     && pass damBreak2D_column || fail damBreak2D_column "rms H $(val rmsH) over $(val nH) points"
-if awk '!/^#/ { if ($2 != 200 || $4 != 0) bad = 1; n++ } END { exit !(n > 2 && !bad) }' \
+if awk '!/^#/ { if ($2 != 200 || $4 != 0 || $5 != 0) bad = 1; n++ } END { exit !(n > 2 && !bad) }' \
        "$c/postProcessing/volume/0/volume.dat"; then
     pass damBreak2D_volume
 else

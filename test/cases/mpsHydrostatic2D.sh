@@ -48,14 +48,14 @@ else
     # probes and wave gauge over the last 0.2 s: bottom probe at y = 0.0025
     # against rho g (h - y) = 956.6 Pa within 5 %; surface at h = 0.1 m
     # within dp/2 (function objects probes and waveGauges)
-    pb=$(awk '!/^#/ && $1 >= 0.8 { s += $2; n++ } END { print s / n }' "$c/postProcessing/bottom/0/p.dat")
+    pb=$(awk '!/^#/ && $1 >= 0.8 { s += $2; n++ } END { print s / n }' "$c/postProcessing/bottom/0/probes.dat")
     awk -v p=$pb 'BEGIN { e = (p - 956.6) / 956.6; exit !(e < 0.05 && e > -0.05) }' \
         && pass hydrostatic2D_probe || fail hydrostatic2D_probe "bottom pressure $pb Pa (956.6 expected)"
-    hg=$(awk '!/^#/ && $1 >= 0.8 { s += $2; n++ } END { print s / n }' "$c/postProcessing/level/0/height.dat")
+    hg=$(awk '!/^#/ && $1 >= 0.8 { s += $2; n++ } END { print s / n }' "$c/postProcessing/level/0/waveGauges.dat")
     awk -v h=$hg 'BEGIN { exit !(h > 0.0975 && h < 0.1025) }' \
         && pass hydrostatic2D_gauge || fail hydrostatic2D_gauge "surface at $hg m (0.1 expected)"
     vol="$c/postProcessing/volume/0/volume.dat"
-    if awk '!/^#/ { if ($2 != 400 || $4 != 0) bad = 1; n++ } END { exit !(n > 10 && !bad) }' "$vol"; then
+    if awk '!/^#/ { if ($2 != 400 || $4 != 0 || $5 != 0) bad = 1; n++ } END { exit !(n > 10 && !bad) }' "$vol"; then
         pass hydrostatic2D_volume
     else
         fail hydrostatic2D_volume "fluid count changed or particles escaped ($vol)"

@@ -33,7 +33,7 @@
 #include "coupling/couple_fluid.h"
 #include "functionObjects/functionObject.h"
 #include "io/vtu.h"
-#include "mps/functionObjects/mps_functionObjects.h"
+#include "functionObjects/mps_functionObjects.h"
 #include "mps/mps.h"
 
 #define MAX_PATCHES 64

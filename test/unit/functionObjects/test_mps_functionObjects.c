@@ -410,7 +410,10 @@ static void test_front(void **state)
              "  f3 { type front; direction (0 1 0); }\n"
              "  f4 { type front; minNumberDensity 0.05; }\n"
              "  f5 { type front; direction (-1 0 0); }\n"
-             "}\n", DP);
+             "  f6 { type front; minNumberDensity 0.05; maxHeight %.17g; }\n"
+             "  f7 { type front; minNumberDensity 0.05; maxHeight %.17g; }\n"
+             "  f8 { type front; direction (0 1 0); maxHeight %.17g; }\n"
+             "}\n", DP, 14.5 * DP, 15 * DP, (H + 0.5) * DP);
     run(text, &s, &c, 3, renumber_last);
     char cols[256];
     double v[8];
@@ -435,6 +438,15 @@ static void test_front(void **state)
     assert_int_equal(read_output("f5", "front", cols, sizeof cols, v, 8,
                                  &rows), 2);
     assert_close(v[1], -DP, tol);
+    assert_int_equal(read_output("f6", "front", cols, sizeof cols, v, 8,
+                                 &rows), 2);
+    assert_close(v[1], W * DP, tol);             /* splash above maxHeight */
+    assert_int_equal(read_output("f7", "front", cols, sizeof cols, v, 8,
+                                 &rows), 2);
+    assert_close(v[1], (W + 2) * DP, tol);       /* at maxHeight: counted */
+    assert_int_equal(read_output("f8", "front", cols, sizeof cols, v, 8,
+                                 &rows), 2);
+    assert_close(v[1], H * DP, tol);             /* bump cut off         */
     cloud_free(&c);
 }
 
@@ -651,6 +663,8 @@ static const struct bad_case bad[] = {
     {2, "a { type front; direction (1 0); }", "3"},
     {2, "a { type front; gravity 9.81; }", "referenceLength"},
     {2, "a { type front; referenceLength 0; }", "positive"},
+    {2, "a { type front; maxHeight 0; }", "maxHeight"},
+    {2, "a { type front; maxHeight -0.1; }", "maxHeight"},
 };
 
 static void test_errors(void **state)

@@ -13,8 +13,8 @@ EXP="$ROOT/../shared/data/kleefsman_spheric2/spheric_test2_marin_exp.csv"
 # a restarted run writes postProcessing/<name>/<startTime>/: join them in time order
 TMP="$(mktemp -d)"; trap 'rm -rf "$TMP"' EXIT
 join_fo() { for d in $(ls "$CASE/postProcessing/$1" 2>/dev/null | sort -g); do cat "$CASE/postProcessing/$1/$d/$2"; done; }
-H="$TMP/height.dat"; P="$TMP/p.dat"
-join_fo heights height.dat > "$H"; join_fo pressure p.dat > "$P"
+H="$TMP/waveGauges.dat"; P="$TMP/probes.dat"
+join_fo heights waveGauges.dat > "$H"; join_fo pressure probes.dat > "$P"
 for f in "$EXP" "$H" "$P"; do [ -s "$f" ] || { echo "compare.sh: $f missing or empty" >&2; exit 1; }; done
 awk -F'[ ,]+' '
 FNR == NR { if (FNR > 1) { n++; t[n] = $1; for (k = 1; k <= 4; k++) h[k, n] = $(9 + k) } next }

@@ -13,11 +13,11 @@ set xrange [0:6]; set xlabel 't [s]'
 do for [k=1:4] {
     set ylabel sprintf('H%d [m]', k)
     plot exp u 1:(column(9+k)) every ::1 w l lc rgb 'gray' t 'MARIN', \
-         fo('heights', 'height.dat') u 1:(column(k+1)) w l lw 2 t 'mpsFluid'
+         fo('heights', 'waveGauges.dat') u 1:(column(k+1)) w l lw 2 t 'mpsFluid'
 }
 set ylabel 'P1 [Pa]'
 plot exp u 1:2 every ::1 w l lc rgb 'gray' t 'MARIN', \
-     fo('pressure', 'p.dat') u 1:2 w l lw 2 t 'mpsFluid'
+     fo('pressure', 'probes.dat') u 1:2 w l lw 2 t 'mpsFluid'
 set ylabel 'F_x on the box [N]'
 plot fo('load', 'forces.dat') u 1:2 w l lw 2 t 'mpsFluid'
 unset multiplot
