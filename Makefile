@@ -71,10 +71,14 @@ $(1)_OBJS := $$(patsubst %.c,$(BUILD)/obj/%.o,$$($(1)_SRCS))
 DEPS :=
 -include src/$(1)/Make/options
 $(1)_DEPS := $$(DEPS)
-$(BUILD)/lib/lib$(1).a: $$($(1)_OBJS) $(if $(filter core,$(1)),$(BUILD)/obj/gen/gitrev.o)
+# The object list is a prerequisite too, so that deleting a source file
+# rebuilds the archive instead of leaving the stale object in it.
+$$(shell mkdir -p $(BUILD)/lib; f=$(BUILD)/lib/lib$(1).objs; \
+    t='$$(sort $$($(1)_OBJS))'; [ -f $$$$f ] && [ "$$$$(cat $$$$f)" = "$$$$t" ] || echo "$$$$t" > $$$$f)
+$(BUILD)/lib/lib$(1).a: $$($(1)_OBJS) $(BUILD)/lib/lib$(1).objs $(if $(filter core,$(1)),$(BUILD)/obj/gen/gitrev.o)
 	@mkdir -p $$(@D)
 	@rm -f $$@
-	ar rcs $$@ $$^
+	ar rcs $$@ $$(filter %.o,$$^)
 endef
 $(foreach l,$(LIBNAMES),$(eval $(call LIB_template,$(l))))
 
