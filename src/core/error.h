@@ -79,4 +79,14 @@ void *sim_calloc(size_t n, size_t size);
 void *sim_realloc(void *p, size_t nbytes);
 char *sim_strdup(const char *s);
 
+/* Grow the array p to hold count elements, or return SIM_ERR_NOMEM from
+ * the calling function (the old storage stays valid and owned by p). */
+#define SIM_GROW(p, count)                                               \
+    do {                                                                 \
+        void *q_ = sim_realloc((p), (size_t)(count) * sizeof *(p));      \
+        if (!q_)                                                         \
+            return SIM_ERR_NOMEM;                                        \
+        (p) = q_;                                                        \
+    } while (0)
+
 #endif

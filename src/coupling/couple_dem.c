@@ -23,6 +23,7 @@
 #include <time.h>
 
 #include "core/dict.h"
+#include "core/app.h"
 #include "core/error.h"
 #include "core/log.h"
 #include "coupling/channel.h"
@@ -32,30 +33,21 @@
 static const int DIM_RHO[7] = { 1, -3, 0, 0, 0, 0, 0 };
 static const int DIM_NU[7] = { 0, 2, -1, 0, 0, 0, 0 };
 
-static double now(void)
-{
-    struct timespec ts;
-    clock_gettime(CLOCK_MONOTONIC, &ts);
-    return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
-}
-
-#define GROW(p, count)                                                       \
-    do {                                                                     \
-        void *q_ = sim_realloc((p), (size_t)(count) * sizeof *(p) + 64);     \
-        if (!q_)                                                             \
-            return SIM_ERR_NOMEM;                                            \
-        (p) = q_;                                                            \
-    } while (0)
-
 static int grow(struct couple_dem *cd, size_t n)
 {
     if (n <= cd->cap && cd->uf)
         return SIM_OK;
     size_t cap = n > 2 * cd->cap ? n : 2 * cd->cap;
-    GROW(cd->uf, 3 * cap); GROW(cd->eps, cap); GROW(cd->gradp, 3 * cap);
-    GROW(cd->wet, cap); GROW(cd->fext, 3 * cap); GROW(cd->V, cap);
-    GROW(cd->d, cap); GROW(cd->Fapplied, 3 * cap); GROW(cd->Fsend, 3 * cap);
-    GROW(cd->work, 3 * cap);
+    SIM_GROW(cd->uf, 3 * cap);
+    SIM_GROW(cd->eps, cap);
+    SIM_GROW(cd->gradp, 3 * cap);
+    SIM_GROW(cd->wet, cap);
+    SIM_GROW(cd->fext, 3 * cap);
+    SIM_GROW(cd->V, cap);
+    SIM_GROW(cd->d, cap);
+    SIM_GROW(cd->Fapplied, 3 * cap);
+    SIM_GROW(cd->Fsend, 3 * cap);
+    SIM_GROW(cd->work, 3 * cap);
     cd->cap = cap;
     return SIM_OK;
 }
@@ -199,9 +191,9 @@ int couple_dem_recv(struct couple_dem *cd, struct dem *d)
     struct channel_frame f;
     const void *pl;
     struct proto_fluid_state fs;
-    double t0 = now();
+    double t0 = app_wall_time();
     TRY(channel_recv(cd->ch, &f, &pl));
-    cd->wait += now() - t0;
+    cd->wait += app_wall_time() - t0;
     int rc = proto_view_fluid_state(&f, pl, &fs);
     if (!rc && fabs(f.time - d->t) > 1e-9 * (1.0 + fabs(d->t)))
         rc = sim_error(SIM_ERR_INPUT, "coupling: the fluid is at t = %.9g s, "

@@ -21,6 +21,7 @@
 #include <time.h>
 
 #include "core/dict.h"
+#include "core/app.h"
 #include "core/error.h"
 #include "core/log.h"
 #include "coupling/channel.h"
@@ -29,30 +30,22 @@
 #include "coupling/reaction.h"
 #include "mps/mps.h"
 
-static double now(void)
-{
-    struct timespec ts;
-    clock_gettime(CLOCK_MONOTONIC, &ts);
-    return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
-}
-
-#define GROW(p, count)                                                       \
-    do {                                                                     \
-        void *q_ = sim_realloc((p), (size_t)(count) * sizeof *(p) + 64);     \
-        if (!q_)                                                             \
-            return SIM_ERR_NOMEM;                                            \
-        (p) = q_;                                                            \
-    } while (0)
-
 static int grow_grains(struct couple_fluid *cf, int ng)
 {
     if (ng <= cf->cap_g && cf->xg)
         return SIM_OK;
     int cap = ng > 2 * cf->cap_g ? ng : 2 * cf->cap_g;
-    GROW(cf->xg, 3 * cap); GROW(cf->vg, 3 * cap); GROW(cf->rg, cap);
-    GROW(cf->Vg, cap); GROW(cf->Vs, cap); GROW(cf->Fbar, 3 * cap);
-    GROW(cf->Fin, 3 * cap); GROW(cf->eps_k, cap); GROW(cf->u_k, 3 * cap);
-    GROW(cf->gradp_k, 3 * cap); GROW(cf->wet, cap);
+    SIM_GROW(cf->xg, 3 * cap);
+    SIM_GROW(cf->vg, 3 * cap);
+    SIM_GROW(cf->rg, cap);
+    SIM_GROW(cf->Vg, cap);
+    SIM_GROW(cf->Vs, cap);
+    SIM_GROW(cf->Fbar, 3 * cap);
+    SIM_GROW(cf->Fin, 3 * cap);
+    SIM_GROW(cf->eps_k, cap);
+    SIM_GROW(cf->u_k, 3 * cap);
+    SIM_GROW(cf->gradp_k, 3 * cap);
+    SIM_GROW(cf->wet, cap);
     cf->cap_g = cap;
     return SIM_OK;
 }
@@ -61,9 +54,13 @@ static int grow_particles(struct couple_fluid *cf, int cap)
 {
     if (cap <= cf->cap_p && cf->eps)
         return SIM_OK;
-    GROW(cf->eps, cap); GROW(cf->fA, 3 * cap); GROW(cf->gradp_p, 3 * cap);
-    GROW(cf->ppe_factor, cap); GROW(cf->corr_factor, cap);
-    GROW(cf->mask, cap); GROW(cf->id_seen, cap);
+    SIM_GROW(cf->eps, cap);
+    SIM_GROW(cf->fA, 3 * cap);
+    SIM_GROW(cf->gradp_p, 3 * cap);
+    SIM_GROW(cf->ppe_factor, cap);
+    SIM_GROW(cf->corr_factor, cap);
+    SIM_GROW(cf->mask, cap);
+    SIM_GROW(cf->id_seen, cap);
     cf->cap_p = cap;
     return SIM_OK;
 }
@@ -158,7 +155,7 @@ static void check_order(struct couple_fluid *cf, const struct mps_particles *P)
 int couple_fluid_update(struct couple_fluid *cf, struct mps_solver *s)
 {
     struct mps_particles *P = &s->P;
-    double t0 = now();
+    double t0 = app_wall_time();
     TRY(grow_particles(cf, P->cap > P->n ? P->cap : P->n));
     if (cf->cs.skin > 0)
         check_order(cf, P);
@@ -181,14 +178,14 @@ int couple_fluid_update(struct couple_fluid *cf, struct mps_solver *s)
                        cf->fA, cf->rho, cf->g, cf->mask, P->f_ext);
     coupling_ppe_source_factor(cf->cs.model, P->n, cf->eps, cf->ppe_factor);
     coupling_correction_factor(cf->cs.model, P->n, cf->eps, cf->corr_factor);
-    cf->wall += now() - t0;
+    cf->wall += app_wall_time() - t0;
     return SIM_OK;
 }
 
 int couple_fluid_grain_fields(struct couple_fluid *cf, struct mps_solver *s)
 {
     struct mps_particles *P = &s->P;
-    double t0 = now();
+    double t0 = app_wall_time();
     /* The pair list must describe the current particle order: after a
      * step (renumbered, moved) search again at the grain positions the
      * porosity was computed for. */
@@ -220,7 +217,7 @@ int couple_fluid_grain_fields(struct couple_fluid *cf, struct mps_solver *s)
     coupling_interp_grains(&cf->pairs, cf->mask, cf->eps, P->u, gp, &G);
     if (cf->cs.model == COUPLING_MODEL_A && !gp)
         memset(cf->gradp_k, 0, 3 * (size_t)cf->ng * sizeof *cf->gradp_k);
-    cf->wall += now() - t0;
+    cf->wall += app_wall_time() - t0;
     return SIM_OK;
 }
 
@@ -250,9 +247,9 @@ static int receive_dem(struct couple_fluid *cf, double t_expect,
     struct channel_frame f;
     const void *pl;
     struct proto_dem_state st;
-    double t0 = now();
+    double t0 = app_wall_time();
     TRY(channel_recv(cf->ch, &f, &pl));
-    cf->wait += now() - t0;
+    cf->wait += app_wall_time() - t0;
     int rc = proto_view_dem_state(&f, pl, &st);
     if (!rc && fabs(f.time - t_expect) > tol)
         rc = sim_error(SIM_ERR_INPUT, "coupling: the DEM side is at t = %.9g "

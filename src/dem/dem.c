@@ -34,23 +34,23 @@ void dem_free(struct dem *d)
     memset(d, 0, sizeof *d);
 }
 
-#define GROW(p, count)                                                    \
-    do {                                                                  \
-        void *q_ = sim_realloc((p), (count) * sizeof *(p));               \
-        if (!q_)                                                          \
-            return SIM_ERR_NOMEM;                                         \
-        (p) = q_;                                                         \
-    } while (0)
-
 int dem_resize(struct dem *d, size_t n)
 {
     if (n > d->cap || !d->x) {
         size_t cap = n > 0 ? n : 1;
-        GROW(d->x, 3 * cap); GROW(d->v, 3 * cap); GROW(d->w, 3 * cap);
-        GROW(d->acc, 3 * cap); GROW(d->alpha, 3 * cap);
-        GROW(d->r, cap); GROW(d->m, cap); GROW(d->inv_m, cap);
-        GROW(d->inv_i, cap); GROW(d->group, cap); GROW(d->id, cap);
-        GROW(d->cpl.fd, 3 * cap); GROW(d->cpl.fd_sum, 3 * cap);
+        SIM_GROW(d->x, 3 * cap);
+        SIM_GROW(d->v, 3 * cap);
+        SIM_GROW(d->w, 3 * cap);
+        SIM_GROW(d->acc, 3 * cap);
+        SIM_GROW(d->alpha, 3 * cap);
+        SIM_GROW(d->r, cap);
+        SIM_GROW(d->m, cap);
+        SIM_GROW(d->inv_m, cap);
+        SIM_GROW(d->inv_i, cap);
+        SIM_GROW(d->group, cap);
+        SIM_GROW(d->id, cap);
+        SIM_GROW(d->cpl.fd, 3 * cap);
+        SIM_GROW(d->cpl.fd_sum, 3 * cap);
         for (size_t i = d->n; i < cap; i++) {
             for (int a = 0; a < 3; a++)
                 d->x[3 * i + a] = d->v[3 * i + a] = d->w[3 * i + a] = 0;
@@ -78,7 +78,7 @@ static int wall_candidates(struct dem *d)
                 continue;
             if (k == d->wlist_cap) {
                 size_t cap = d->wlist_cap ? 2 * d->wlist_cap : 1024;
-                GROW(d->wlist, cap);
+                SIM_GROW(d->wlist, cap);
                 d->wlist_cap = cap;
             }
             d->wlist[k++] = w;
@@ -106,21 +106,21 @@ static void pair_constants(struct dem *d)
 static int reserve_histories(struct dem *d)
 {
     if (d->n + 1 > d->wchi_cap) {
-        GROW(d->wall_chi, d->n + 1);
-        GROW(d->wstart, d->n + 1);
+        SIM_GROW(d->wall_chi, d->n + 1);
+        SIM_GROW(d->wstart, d->n + 1);
         d->wchi_cap = d->n + 1;
     }
     size_t np = d->nl.npairs > 0 ? d->nl.npairs : 1;
     if (np > d->hist_cap) {
         size_t cap = np + np / 2;
-        GROW(d->hist, 3 * cap);
-        GROW(d->pair_c, 2 * cap);
+        SIM_GROW(d->hist, 3 * cap);
+        SIM_GROW(d->pair_c, 2 * cap);
         d->hist_cap = cap;
     }
     size_t nw = d->n * (size_t)d->nwalls;
     nw = nw > 0 ? nw : 1;
     if (nw > d->whist_cap) {
-        GROW(d->whist, 3 * nw);
+        SIM_GROW(d->whist, 3 * nw);
         d->whist_cap = nw;
     }
     return SIM_OK;
@@ -185,13 +185,13 @@ static int rebuild(struct dem *d, const double *x, const size_t *map,
     /* scratch copies of the old list, kept between rebuilds so that the
      * time loop does not allocate once they have reached their size */
     if (on + 1 > d->old_rows_cap) {
-        GROW(d->old_start, on + 1 + on / 4);
+        SIM_GROW(d->old_start, on + 1 + on / 4);
         d->old_rows_cap = on + 1 + on / 4;
     }
     if (onp + 1 > d->old_pairs_cap) {
         size_t cap = onp + 1 + onp / 4;
-        GROW(d->old_j, cap);
-        GROW(d->old_h, 3 * cap);
+        SIM_GROW(d->old_j, cap);
+        SIM_GROW(d->old_h, 3 * cap);
         d->old_pairs_cap = cap;
     }
     size_t *ostart = d->old_start;

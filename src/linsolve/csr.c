@@ -12,17 +12,9 @@
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
-#include <time.h>
 
 #include "core/error.h"
 #include "linsolve/linsolve_impl.h"
-
-double linsolve_wtime(void)
-{
-    struct timespec t;
-    clock_gettime(CLOCK_MONOTONIC, &t);
-    return (double)t.tv_sec + 1e-9 * (double)t.tv_nsec;
-}
 
 int csr_alloc(struct csr_matrix *A, int n, int64_t nnz)
 {

@@ -139,6 +139,4 @@ double vec_dot(int n, const double *a, const double *b);
 void vec_copy(int n, const double *a, double *b);
 void vec_zero(int n, double *a);
 
-double linsolve_wtime(void);
-
 #endif
