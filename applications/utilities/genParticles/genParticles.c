@@ -165,6 +165,25 @@ static void unstage(struct staged *s)
         rmdir(s->zero_dir);
 }
 
+/* Write n points with the given fields plus an `id` field 0..n-1 (the
+ * last entry of f, whose data this fills). */
+static int write_with_ids(const struct gen_case *c, size_t n, double *x,
+                          struct vtu_field *f, int nf, const char *path)
+{
+    struct vtu_cloud cl = { n, x, nf, f, 0.0 };
+    int64_t *id = sim_malloc((n ? n : 1) * sizeof *id);
+    int rc;
+
+    if (!id)
+        return SIM_ERR_NOMEM;
+    for (size_t k = 0; k < n; k++)
+        id[k] = (int64_t)k;
+    f[nf - 1].data = id;
+    rc = vtu_write(path, &cl, c->binary);
+    free(id);
+    return rc;
+}
+
 static int write_fluid(const struct gen_case *c, const struct mps_cloud *m,
                        const char *path)
 {
@@ -176,18 +195,7 @@ static int write_fluid(const struct gen_case *c, const struct mps_cloud *m,
         { "normal", VTU_FLOAT64, 3, m->normal },
         { "id", VTU_INT64, 1, NULL },
     };
-    struct vtu_cloud cl = { m->n, m->x, 6, f, 0.0 };
-    int64_t *id = sim_malloc((m->n ? m->n : 1) * sizeof *id);
-    int rc;
-
-    if (!id)
-        return SIM_ERR_NOMEM;
-    for (size_t k = 0; k < m->n; k++)
-        id[k] = (int64_t)k;
-    f[5].data = id;
-    rc = vtu_write(path, &cl, c->binary);
-    free(id);
-    return rc;
+    return write_with_ids(c, m->n, m->x, f, 6, path);
 }
 
 static int write_dem(const struct gen_case *c, const struct dem_cloud *m,
@@ -200,18 +208,7 @@ static int write_dem(const struct gen_case *c, const struct dem_cloud *m,
         { "group", VTU_INT32, 1, m->group },
         { "id", VTU_INT64, 1, NULL },
     };
-    struct vtu_cloud cl = { m->n, m->x, 5, f, 0.0 };
-    int64_t *id = sim_malloc((m->n ? m->n : 1) * sizeof *id);
-    int rc;
-
-    if (!id)
-        return SIM_ERR_NOMEM;
-    for (size_t k = 0; k < m->n; k++)
-        id[k] = (int64_t)k;
-    f[4].data = id;
-    rc = vtu_write(path, &cl, c->binary);
-    free(id);
-    return rc;
+    return write_with_ids(c, m->n, m->x, f, 5, path);
 }
 
 static int write_patches(const struct gen_case *c, const char *path)
