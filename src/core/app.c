@@ -177,6 +177,20 @@ void app_log_times(const struct app *a)
              app_cpu_time() - a->cpu0, app_wall_time() - a->wall0);
 }
 
+int app_write_used_parameters(const struct app *a)
+{
+    char dir[4096], path[4200];
+    const char *parts[] = {"postProcessing", "postProcessing/usedParameters"};
+    for (int k = 0; k < 2; k++) {
+        app_path(a, parts[k], dir, sizeof dir);
+        if (mkdir(dir, 0777) != 0 && errno != EEXIST)
+            return sim_error(SIM_ERR_IO, "cannot create directory '%s': %s",
+                             dir, strerror(errno));
+    }
+    snprintf(path, sizeof path, "%s/%s", dir, a->name);
+    return params_write(path, 1);
+}
+
 int app_end(const struct app *a)
 {
     log_info("End\n");

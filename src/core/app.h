@@ -66,6 +66,11 @@ void app_log_times(const struct app *a);
 double app_wall_time(void);  /* seconds, monotonic */
 double app_cpu_time(void);   /* process CPU seconds */
 
+/* Write the parameters this program read, defaults included, to
+ * postProcessing/usedParameters/<program> (one file per program, so that
+ * the two programs of a coupled case keep theirs) and to the log. */
+int app_write_used_parameters(const struct app *a);
+
 /* Print "End" and return the exit status 0 (for `return app_end(&a);`). */
 int app_end(const struct app *a);
 

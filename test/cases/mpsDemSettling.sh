@@ -44,6 +44,12 @@ rf=$?
 if [ $rf -eq 0 ] && [ $rd -eq 0 ] && grep -q '^End' "$c/log.mpsFluid" \
    && grep -q '^End' "$c/log.demSolid" && grep -q 'exchanges' "$c/log.mpsFluid"; then
     pass mpsDemSettling_tandem
+    if [ -s "$c/postProcessing/usedParameters/mpsFluid" ] \
+       && [ -s "$c/postProcessing/usedParameters/demSolid" ]; then
+        pass mpsDemSettling_usedParametersOfBothPrograms
+    else
+        fail mpsDemSettling_usedParametersOfBothPrograms "$(ls "$c/postProcessing/usedParameters" 2>&1)"
+    fi
 else
     fail mpsDemSettling_tandem "exit $rf/$rd: $(grep -h -A2 FATAL "$c"/log.* | head -4 | tr '\n' ' ')"
     exit 1

@@ -166,12 +166,7 @@ static int start_output(struct solid *s)
         TRY(pvd_truncate(pvd, s->rt.value));
     snprintf(rel, sizeof rel, "%s/dem.vtu", s->rt.name);
     TRY(pvd_add(pvd, s->rt.value, rel));
-    char used[4200];
-    app_path(&s->app, "postProcessing", used, sizeof used);
-    if (access(used, F_OK) != 0 && mkdir(used, 0777) != 0)
-        return sim_error(SIM_ERR_IO, "%s: cannot create", used);
-    app_path(&s->app, "postProcessing/usedParameters", used, sizeof used);
-    return params_write(used, 1);
+    return app_write_used_parameters(&s->app);
 }
 
 /* The time the DEM is advanced to. Between writes it is k deltaT with k

@@ -7,7 +7,7 @@
  *         (from genParticles: patch names, dimension, dp),
  *         <startTime>/fluid.vtu
  * Writes  <time>/fluid.vtu, fluid.pvd, postProcessing/<functionObject>/,
- *         postProcessing/usedParameters
+ *         postProcessing/usedParameters/mpsFluid
  *
  * Every key: mpsFluid.reference beside this file.
  *
@@ -263,17 +263,13 @@ static int write_fields(struct fluid *f)
 
 static int start_output(struct fluid *f)
 {
-    char pvd[4200], rel[256], used[4200];
+    char pvd[4200], rel[256];
     app_path(&f->app, "fluid.pvd", pvd, sizeof pvd);
     if (access(pvd, F_OK) == 0)
         TRY(pvd_truncate(pvd, f->rt.value));
     snprintf(rel, sizeof rel, "%s/fluid.vtu", f->rt.name);
     TRY(pvd_add(pvd, f->rt.value, rel));
-    app_path(&f->app, "postProcessing", used, sizeof used);
-    if (access(used, F_OK) != 0 && mkdir(used, 0777) != 0)
-        return sim_error(SIM_ERR_IO, "%s: cannot create", used);
-    app_path(&f->app, "postProcessing/usedParameters", used, sizeof used);
-    return params_write(used, 1);
+    return app_write_used_parameters(&f->app);
 }
 
 /* A failed step (PPE not converged, NaN, too many escapes): keep the state

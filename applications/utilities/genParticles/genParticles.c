@@ -318,6 +318,8 @@ int main(int argc, char **argv)
              "dummy particles and grains; write 0/fluid.vtu, 0/dem.vtu",
              argc, argv, NULL, 0);
     rc = run(&app);
+    if (rc == SIM_OK)
+        rc = app_write_used_parameters(&app);
     if (rc != SIM_OK)
         app_fatal(&app, rc);
     return app_end(&app);
