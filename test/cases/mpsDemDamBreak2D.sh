@@ -10,22 +10,8 @@
 #   at 0.2 s is at least 1 dp beyond its start and still in the tank
 #   (measured 0.044 -> 0.088 m with B, -> 0.142 m with A).
 # MPSFLUID / DEMSOLID override the programs (default bin/).
-ROOT="$(cd "$(dirname "$0")/../.." && pwd)"
-MPSFLUID=${MPSFLUID:-$ROOT/bin/mpsFluid}
-DEMSOLID=${DEMSOLID:-$ROOT/bin/demSolid}
-TMP="$(mktemp -d)"
-trap 'rm -rf "$TMP"' EXIT
-export OMP_NUM_THREADS=1
-fails=0
-pass() { echo "PASS $1"; }
-fail() { echo "FAIL $1: $2"; fails=$((fails + 1)); }
-for p in "$MPSFLUID" "$DEMSOLID" "$ROOT/bin/genParticles"; do
-    [ -x "$p" ] || { fail mpsDemDamBreak2D "$p not built"; exit 1; }
-done
-if ! grep -q couple_fluid_exchange "$MPSFLUID"; then
-    fail mpsDemDamBreak2D "$MPSFLUID has no coupling hooks (couple_fluid_exchange): wire applications/solvers/mpsFluid (issue 6)"
-    exit 1
-fi
+NAME=mpsDemDamBreak2D
+. "$(dirname "$0")/lib/tandem.sh"
 maxx() {   # largest grain centre x in a dem.vtu (ascii)
     awk '/<Points>/ { p = 1; next } p && /<\/DataArray>/ { exit }
          p && NF >= 3 && $1 ~ /^[-0-9.]/ { for (i = 1; i <= NF; i += 3) if (!n++ || $i > m) m = $i }
@@ -56,15 +42,8 @@ EOD
     echo "channel mpsdem-db2d-$model-$$;" >> "$c/system/couplingDict"
     (cd "$c" && "$ROOT/bin/genParticles" > log.genParticles 2>&1) \
         || { fail "damBreak2D_$model" "genParticles failed"; continue; }
-    (cd "$c" && timeout 200 "$MPSFLUID" > log.mpsFluid 2>&1) &
-    pf=$!
-    (cd "$c" && timeout 200 "$DEMSOLID" > log.demSolid 2>&1)
-    rd=$?
-    wait $pf
-    rf=$?
-    if [ $rf -ne 0 ] || [ $rd -ne 0 ] || ! grep -q '^End' "$c/log.mpsFluid" \
-       || ! grep -q '^End' "$c/log.demSolid"; then
-        fail "damBreak2D_${model}_run" "exit $rf/$rd: $(grep -h -A2 FATAL "$c"/log.* | head -4 | tr '\n' ' ')"
+    if ! run_tandem "$c"; then
+        fail "damBreak2D_${model}_run" "exit $rf/$rd: $(fatal_of "$c")"
         continue
     fi
     esc=$(grep -o 'escaped [0-9]*' "$c/log.mpsFluid" | tail -1 | awk '{ print $2 }')

@@ -15,22 +15,8 @@
 # filling the pores (A0-16) a dense 2-D bed starts at n ~ 1.4 n0 and throws
 # the water out of the tank.
 # MPSFLUID / DEMSOLID override the programs (default bin/).
-ROOT="$(cd "$(dirname "$0")/../.." && pwd)"
-MPSFLUID=${MPSFLUID:-$ROOT/bin/mpsFluid}
-DEMSOLID=${DEMSOLID:-$ROOT/bin/demSolid}
-TMP="$(mktemp -d)"
-trap 'rm -rf "$TMP"' EXIT
-export OMP_NUM_THREADS=1
-fails=0
-pass() { echo "PASS $1"; }
-fail() { echo "FAIL $1: $2"; fails=$((fails + 1)); }
-for p in "$MPSFLUID" "$DEMSOLID" "$ROOT/bin/genParticles"; do
-    [ -x "$p" ] || { fail mpsDemSedimentation2D "$p not built"; exit 1; }
-done
-if ! grep -q couple_fluid_exchange "$MPSFLUID"; then
-    fail mpsDemSedimentation2D "$MPSFLUID has no coupling hooks (couple_fluid_exchange): wire applications/solvers/mpsFluid (issue 6)"
-    exit 1
-fi
+NAME=mpsDemSedimentation2D
+. "$(dirname "$0")/lib/tandem.sh"
 for model in A B; do
     c="$TMP/$model"
     mkdir -p "$c/system" "$c/constant" "$c/0"
@@ -65,16 +51,10 @@ EOD
     echo "channel mpsdem-sed2d-$model-$$;" >> "$c/system/couplingDict"
     (cd "$c" && "$ROOT/bin/genParticles" > log.genParticles 2>&1) \
         || { fail "sedimentation2D_$model" "genParticles failed"; continue; }
-    (cd "$c" && timeout 200 "$MPSFLUID" > log.mpsFluid 2>&1) &
-    pf=$!
-    (cd "$c" && timeout 200 "$DEMSOLID" > log.demSolid 2>&1)
-    rd=$?
-    wait $pf
-    rf=$?
+    run_tandem "$c"; ok=$?
     esc=$(grep -o 'escaped [0-9]*' "$c/log.mpsFluid" | tail -1 | awk '{ print $2 }')
-    if [ $rf -ne 0 ] || [ $rd -ne 0 ] || ! grep -q '^End' "$c/log.demSolid" \
-       || [ "$esc" != 0 ]; then
-        fail "sedimentation2D_${model}_run" "exit $rf/$rd, escaped $esc: $(grep -h -A2 FATAL "$c"/log.* | head -4 | tr '\n' ' ')"
+    if [ $ok -ne 0 ] || [ "$esc" != 0 ]; then
+        fail "sedimentation2D_${model}_run" "exit $rf/$rd, escaped $esc: $(fatal_of "$c")"
         continue
     fi
     pass "sedimentation2D_${model}_run"

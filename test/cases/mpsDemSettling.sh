@@ -11,23 +11,9 @@
 #   a restart from 0.02 s gives the continuous run's 0.04 s files exactly;
 #   a case without system/couplingDict runs demSolid alone (no channel).
 # MPSFLUID / DEMSOLID override the programs (default bin/).
-ROOT="$(cd "$(dirname "$0")/../.." && pwd)"
+NAME=mpsDemSettling
+. "$(dirname "$0")/lib/tandem.sh"
 TUT="$ROOT/tutorials/mpsDem/singleGrainSettling"
-MPSFLUID=${MPSFLUID:-$ROOT/bin/mpsFluid}
-DEMSOLID=${DEMSOLID:-$ROOT/bin/demSolid}
-TMP="$(mktemp -d)"
-trap '[ -n "$KEEP" ] || rm -rf "$TMP"' EXIT
-export OMP_NUM_THREADS=1
-fails=0
-pass() { echo "PASS $1"; }
-fail() { echo "FAIL $1: $2"; fails=$((fails + 1)); }
-for p in "$MPSFLUID" "$DEMSOLID" "$ROOT/bin/genParticles"; do
-    [ -x "$p" ] || { fail mpsDemSettling "$p not built"; exit 1; }
-done
-if ! grep -q couple_fluid_exchange "$MPSFLUID"; then
-    fail mpsDemSettling "$MPSFLUID has no coupling hooks (couple_fluid_exchange): wire applications/solvers/mpsFluid (issue 6)"
-    exit 1
-fi
 c="$TMP/case"
 cp -r "$TUT" "$c"
 sed -i 's/^endTime .*/endTime 0.35;/; s/^timeout .*/timeout 30;/' \
@@ -35,14 +21,7 @@ sed -i 's/^endTime .*/endTime 0.35;/; s/^timeout .*/timeout 30;/' \
 echo "channel mpsdem-settling-test-$$;" >> "$c/system/couplingDict"
 (cd "$c" && "$ROOT/bin/genParticles" > log.genParticles 2>&1) \
     || { fail mpsDemSettling "genParticles failed"; exit 1; }
-(cd "$c" && timeout 300 "$MPSFLUID" > log.mpsFluid 2>&1) &
-pf=$!
-(cd "$c" && timeout 300 "$DEMSOLID" > log.demSolid 2>&1)
-rd=$?
-wait $pf
-rf=$?
-if [ $rf -eq 0 ] && [ $rd -eq 0 ] && grep -q '^End' "$c/log.mpsFluid" \
-   && grep -q '^End' "$c/log.demSolid" && grep -q 'exchanges' "$c/log.mpsFluid"; then
+if run_tandem "$c" 300 && grep -q 'exchanges' "$c/log.mpsFluid"; then
     pass mpsDemSettling_tandem
     if [ -s "$c/postProcessing/usedParameters/mpsFluid" ] \
        && [ -s "$c/postProcessing/usedParameters/demSolid" ]; then
@@ -51,7 +30,7 @@ if [ $rf -eq 0 ] && [ $rd -eq 0 ] && grep -q '^End' "$c/log.mpsFluid" \
         fail mpsDemSettling_usedParametersOfBothPrograms "$(ls "$c/postProcessing/usedParameters" 2>&1)"
     fi
 else
-    fail mpsDemSettling_tandem "exit $rf/$rd: $(grep -h -A2 FATAL "$c"/log.* | head -4 | tr '\n' ' ')"
+    fail mpsDemSettling_tandem "exit $rf/$rd: $(fatal_of "$c")"
     exit 1
 fi
 [ ! -e "/dev/shm/mpsdem-settling-test-$$" ] && pass mpsDemSettling_channel_removed \
@@ -82,17 +61,10 @@ cp -r "$TUT" "$r"
 sed -i 's/^endTime .*/endTime 0.04;/; s/^writeInterval .*/writeInterval 0.02;/' "$r/system/controlDict"
 sed -i 's/^timeout .*/timeout 30;/' "$r/system/couplingDict"
 echo "channel mpsdem-settling-restart-$$;" >> "$r/system/couplingDict"
-tandem() {
-    (cd "$r" && timeout 120 "$MPSFLUID" > log.mpsFluid.$1 2>&1) &
-    local p=$!
-    (cd "$r" && timeout 120 "$DEMSOLID" > log.demSolid.$1 2>&1)
-    local q=$?
-    wait $p && [ $q -eq 0 ]
-}
-if (cd "$r" && "$ROOT/bin/genParticles" > log.genParticles 2>&1) && tandem 1 \
+if (cd "$r" && "$ROOT/bin/genParticles" > log.genParticles 2>&1) && run_tandem "$r" 120 1 \
    && mv "$r/0.04" "$r/continuous" \
    && sed -i 's/^startFrom .*/startFrom latestTime;/' "$r/system/controlDict" \
-   && tandem 2 && cmp -s "$r/continuous/fluid.vtu" "$r/0.04/fluid.vtu" \
+   && run_tandem "$r" 120 2 && cmp -s "$r/continuous/fluid.vtu" "$r/0.04/fluid.vtu" \
    && cmp -s "$r/continuous/dem.vtu" "$r/0.04/dem.vtu"; then
     pass mpsDemSettling_restart_identical
 else

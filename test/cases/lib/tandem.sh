@@ -1,0 +1,38 @@
+# tandem.sh — sourced by the coupled case tests (test/cases/mpsDem*.sh):
+# the programs, a scratch directory removed at exit (KEEP=1 keeps it), the
+# PASS/FAIL helpers, and one tandem run of mpsFluid and demSolid.
+#
+#   NAME=mpsDemSettling; . "$(dirname "$0")/lib/tandem.sh"
+#
+# MPSFLUID / DEMSOLID override the programs (default bin/).
+ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/../../.." && pwd)"
+MPSFLUID=${MPSFLUID:-$ROOT/bin/mpsFluid}
+DEMSOLID=${DEMSOLID:-$ROOT/bin/demSolid}
+TMP="$(mktemp -d)"
+trap '[ -n "$KEEP" ] || rm -rf "$TMP"' EXIT
+export OMP_NUM_THREADS=1
+fails=0
+pass() { echo "PASS $1"; }
+fail() { echo "FAIL $1: $2"; fails=$((fails + 1)); }
+for p in "$MPSFLUID" "$DEMSOLID" "$ROOT/bin/genParticles"; do
+    [ -x "$p" ] || { fail "$NAME" "$p not built"; exit 1; }
+done
+
+# run_tandem DIR [SECONDS [SUFFIX]]: mpsFluid and demSolid side by side in
+# DIR, logging to log.<program>[.SUFFIX]; sets rf and rd (their exit
+# statuses); succeeds when both exit 0 and print End.
+run_tandem()
+{
+    local c="$1" limit="${2:-200}" sfx="${3:+.$3}"
+    (cd "$c" && timeout "$limit" "$MPSFLUID" > "log.mpsFluid$sfx" 2>&1) &
+    local pf=$!
+    (cd "$c" && timeout "$limit" "$DEMSOLID" > "log.demSolid$sfx" 2>&1)
+    rd=$?
+    wait $pf
+    rf=$?
+    [ $rf -eq 0 ] && [ $rd -eq 0 ] && grep -q '^End' "$c/log.mpsFluid$sfx" \
+        && grep -q '^End' "$c/log.demSolid$sfx"
+}
+
+# fatal_of DIR: the first FATAL ERROR lines of the logs in DIR, one line.
+fatal_of() { grep -h -A2 FATAL "$1"/log.* 2>/dev/null | head -4 | tr '\n' ' '; }
