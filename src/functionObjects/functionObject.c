@@ -124,8 +124,13 @@ static int open_output(struct fo_entry *e, const struct fo_scene *s,
     if (!e->out)
         return sim_error(SIM_ERR_IO, "cannot write '%s': %s", path,
                          strerror(errno));
-    TRY(e->ops->header(e->data, s, e->out));
-    fflush(e->out);
+    int rc = e->ops->header(e->data, s, e->out);
+    if (rc != SIM_OK || fflush(e->out) != 0) {
+        fclose(e->out);
+        e->out = NULL;
+        return rc != SIM_OK ? rc : sim_error(SIM_ERR_IO, "cannot write '%s'",
+                                             path);
+    }
     return SIM_OK;
 }
 
@@ -167,7 +172,12 @@ static int create_entry(const struct dict *fd, const char *key,
     }
     log_info("Selecting function object %s for %s", e->ops->name, key);
     TRY(e->ops->create(d, s, &e->data));
-    return open_output(e, s, case_dir, start_time, precision);
+    int rc = open_output(e, s, case_dir, start_time, precision);
+    if (rc != SIM_OK) {     /* the entry is not kept: release it here */
+        e->ops->destroy(e->data);
+        e->data = NULL;
+    }
+    return rc;
 }
 
 int fo_list_create(const struct dict *functions,
@@ -194,7 +204,6 @@ int fo_list_create(const struct dict *functions,
         else if (rc == SIM_OK) {
             memset(e, 0, sizeof *e);
         } else {
-            l->n += e->data != NULL || e->out != NULL;
             fo_list_free(l);
             sim_trace(__FILE__, __LINE__, __func__, rc);
             return rc;
