@@ -71,6 +71,22 @@ void precond_release(struct precond *pc);
 int precond_sorted_copy(struct precond *pc, const struct csr_matrix *A,
                         int lower_only);
 
+/* One factorisation attempt of A + alpha diag(A): *bad_row is the first
+ * row with an unusable pivot, or -1 when the factor is complete; the
+ * return value is an error code (allocation, inconsistent storage). */
+typedef int (*precond_attempt_fn)(struct precond *pc,
+                                  const struct csr_matrix *A,
+                                  const double *diag, double alpha,
+                                  int *bad_row);
+/* Factorise with no shift, then with alpha = 1e-3, 4e-3, ... (at most 30
+ * tries) until an attempt succeeds; warn once, naming the first bad row
+ * ("<name>: <pivot> pivot at row ..."). Never succeeding is SIM_ERR_SOLVER
+ * ("<name> broke down ...<hint>"). */
+int precond_factor_shifted(struct precond *pc, const struct csr_matrix *A,
+                           const double *diag, const char *name,
+                           const char *pivot, const char *hint,
+                           precond_attempt_fn attempt);
+
 /* ---- solvers -------------------------------------------------------------- */
 
 struct solver_ops {

@@ -6,6 +6,7 @@
 #include <string.h>
 
 #include "core/error.h"
+#include "core/log.h"
 #include "linsolve/linsolve_impl.h"
 
 const struct precond_ops *const linsolve_preconditioners[] = {
@@ -110,4 +111,29 @@ int precond_sorted_copy(struct precond *pc, const struct csr_matrix *A,
         }
     }
     return SIM_OK;
+}
+
+int precond_factor_shifted(struct precond *pc, const struct csr_matrix *A,
+                           const double *diag, const char *name,
+                           const char *pivot, const char *hint,
+                           precond_attempt_fn attempt)
+{
+    double alpha = 0.0;
+    int first = -1;
+    for (int tries = 0; tries < 30; tries++) {
+        int row;
+        TRY(attempt(pc, A, diag, alpha, &row));
+        if (row < 0) {
+            pc->shift = alpha;
+            if (alpha > 0.0)
+                log_warn("%s: %s pivot at row %d; factorised A + %g diag(A) "
+                         "instead", name, pivot, first, alpha);
+            return SIM_OK;
+        }
+        if (first < 0)
+            first = row;
+        alpha = alpha == 0.0 ? 1e-3 : 4.0 * alpha;
+    }
+    return sim_error(SIM_ERR_SOLVER, "%s broke down even with a diagonal "
+                     "shift of %g diag(A)%s", name, alpha, hint);
 }

@@ -13,7 +13,6 @@
  * precond_ic0.c.
  */
 #include "core/error.h"
-#include "core/log.h"
 #include "linsolve/linsolve_impl.h"
 
 /* Strictly lower triangle of A into pc->fp/fc/fv, in A's column order. */
@@ -54,28 +53,21 @@ static int factor(struct precond *pc, const double *diag, double alpha)
     return -1;
 }
 
+static int attempt(struct precond *pc, const struct csr_matrix *A,
+                   const double *diag, double alpha, int *bad_row)
+{
+    (void)A;  /* copied once by setup: the attempts only rewrite dinv */
+    *bad_row = factor(pc, diag, alpha);
+    return SIM_OK;
+}
+
 static int setup(struct precond *pc, const struct csr_matrix *A,
                  const double *diag)
 {
     TRY(copy_lower(pc, A));
-    double alpha = 0.0;
-    int first = -1;
-    for (int attempt = 0; attempt < 30; attempt++) {
-        int row = factor(pc, diag, alpha);
-        if (row < 0) {
-            pc->shift = alpha;
-            if (alpha > 0.0)
-                log_warn("DIC: non-positive pivot at row %d; factorised "
-                         "A + %g diag(A) instead", first, alpha);
-            return SIM_OK;
-        }
-        if (first < 0)
-            first = row;
-        alpha = alpha == 0.0 ? 1e-3 : 4.0 * alpha;
-    }
-    return sim_error(SIM_ERR_SOLVER, "DIC broke down even with a diagonal "
-                     "shift of %g diag(A); the matrix is probably not SPD",
-                     alpha);
+    return precond_factor_shifted(pc, A, diag, "DIC", "non-positive",
+                                  "; the matrix is probably not SPD",
+                                  attempt);
 }
 
 static void apply(const struct precond *pc, const double *r, double *z)

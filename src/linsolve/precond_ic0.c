@@ -18,7 +18,6 @@
 #include <math.h>
 
 #include "core/error.h"
-#include "core/log.h"
 #include "linsolve/linsolve_impl.h"
 
 /* One attempt; returns the first row with a non-positive pivot, or -1. */
@@ -53,33 +52,25 @@ static int factor(struct precond *pc, const struct csr_matrix *A, double alpha)
     return -1;
 }
 
+static int attempt(struct precond *pc, const struct csr_matrix *A,
+                   const double *diag, double alpha, int *bad_row)
+{
+    (void)diag;
+    TRY(precond_sorted_copy(pc, A, 1));
+    for (int i = 0; i < A->n; i++)
+        if (pc->fdiag[i] != pc->fp[i + 1] - 1)
+            return sim_error(SIM_ERR_INTERNAL, "ic0: diagonal of row %d "
+                             "is not last after sorting", i);
+    *bad_row = factor(pc, A, alpha);
+    return SIM_OK;
+}
+
 static int setup(struct precond *pc, const struct csr_matrix *A,
                  const double *diag)
 {
-    (void)diag;
-    double alpha = 0.0;
-    int first = -1;
-    for (int attempt = 0; attempt < 30; attempt++) {
-        TRY(precond_sorted_copy(pc, A, 1));
-        for (int i = 0; i < A->n; i++)
-            if (pc->fdiag[i] != pc->fp[i + 1] - 1)
-                return sim_error(SIM_ERR_INTERNAL, "ic0: diagonal of row %d "
-                                 "is not last after sorting", i);
-        int row = factor(pc, A, alpha);
-        if (row < 0) {
-            pc->shift = alpha;
-            if (alpha > 0.0)
-                log_warn("IC(0): non-positive pivot at row %d; factorised "
-                         "A + %g diag(A) instead", first, alpha);
-            return SIM_OK;
-        }
-        if (first < 0)
-            first = row;
-        alpha = alpha == 0.0 ? 1e-3 : 4.0 * alpha;
-    }
-    return sim_error(SIM_ERR_SOLVER, "IC(0) broke down even with a diagonal "
-                     "shift of %g diag(A); the matrix is probably not SPD",
-                     alpha);
+    return precond_factor_shifted(pc, A, diag, "IC(0)", "non-positive",
+                                  "; the matrix is probably not SPD",
+                                  attempt);
 }
 
 static void apply(const struct precond *pc, const double *r, double *z)

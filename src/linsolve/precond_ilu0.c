@@ -13,7 +13,6 @@
 #include <math.h>
 
 #include "core/error.h"
-#include "core/log.h"
 #include "linsolve/linsolve_impl.h"
 
 static int factor(struct precond *pc, int n, double alpha)
@@ -43,28 +42,20 @@ static int factor(struct precond *pc, int n, double alpha)
     return -1;
 }
 
+static int attempt(struct precond *pc, const struct csr_matrix *A,
+                   const double *diag, double alpha, int *bad_row)
+{
+    (void)diag;
+    TRY(precond_sorted_copy(pc, A, 0));
+    *bad_row = factor(pc, A->n, alpha);
+    return SIM_OK;
+}
+
 static int setup(struct precond *pc, const struct csr_matrix *A,
                  const double *diag)
 {
-    (void)diag;
-    double alpha = 0.0;
-    int first = -1;
-    for (int attempt = 0; attempt < 30; attempt++) {
-        TRY(precond_sorted_copy(pc, A, 0));
-        int row = factor(pc, A->n, alpha);
-        if (row < 0) {
-            pc->shift = alpha;
-            if (alpha > 0.0)
-                log_warn("ILU(0): zero pivot at row %d; factorised "
-                         "A + %g diag(A) instead", first, alpha);
-            return SIM_OK;
-        }
-        if (first < 0)
-            first = row;
-        alpha = alpha == 0.0 ? 1e-3 : 4.0 * alpha;
-    }
-    return sim_error(SIM_ERR_SOLVER, "ILU(0) broke down even with a diagonal "
-                     "shift of %g diag(A)", alpha);
+    return precond_factor_shifted(pc, A, diag, "ILU(0)", "zero", "",
+                                  attempt);
 }
 
 static void apply(const struct precond *pc, const double *r, double *z)
