@@ -15,6 +15,7 @@
 
 #include "core/dict.h"
 #include "core/error.h"
+#include "core/files.h"
 #include "core/log.h"
 #include "core/version.h"
 
@@ -180,13 +181,8 @@ void app_log_times(const struct app *a)
 int app_write_used_parameters(const struct app *a)
 {
     char dir[4096], path[4200];
-    const char *parts[] = {"postProcessing", "postProcessing/usedParameters"};
-    for (int k = 0; k < 2; k++) {
-        app_path(a, parts[k], dir, sizeof dir);
-        if (mkdir(dir, 0777) != 0 && errno != EEXIST)
-            return sim_error(SIM_ERR_IO, "cannot create directory '%s': %s",
-                             dir, strerror(errno));
-    }
+    app_path(a, "postProcessing/usedParameters", dir, sizeof dir);
+    TRY(files_mkdir_p(dir));
     snprintf(path, sizeof path, "%s/%s", dir, a->name);
     return params_write(path, 1);
 }

@@ -20,33 +20,9 @@
 
 #include "core/dict_impl.h"
 #include "core/error.h"
+#include "core/files.h"
 
 /* ---- atomic write ------------------------------------------------------------ */
-
-static int mkdir_p(const char *dir)
-{
-    char *tmp = strdup(dir);
-    if (!tmp)
-        return sim_error(SIM_ERR_NOMEM, "out of memory");
-    for (char *s = tmp + 1; *s; s++) {
-        if (*s != '/')
-            continue;
-        *s = '\0';
-        if (mkdir(tmp, 0755) != 0 && errno != EEXIST) {
-            int rc = sim_error(SIM_ERR_IO, "cannot create directory '%s': %s",
-                               tmp, strerror(errno));
-            free(tmp);
-            return rc;
-        }
-        *s = '/';
-    }
-    int rc = SIM_OK;
-    if (mkdir(tmp, 0755) != 0 && errno != EEXIST)
-        rc = sim_error(SIM_ERR_IO, "cannot create directory '%s': %s", tmp,
-                       strerror(errno));
-    free(tmp);
-    return rc;
-}
 
 int dict_write_atomic(const char *path, const char *text, size_t len,
                       int mkparent)
@@ -54,7 +30,7 @@ int dict_write_atomic(const char *path, const char *text, size_t len,
     char *copy = strdup(path);
     if (!copy)
         return sim_error(SIM_ERR_NOMEM, "out of memory");
-    int rc = mkparent ? mkdir_p(dirname(copy)) : SIM_OK;
+    int rc = mkparent ? files_mkdir_p(dirname(copy)) : SIM_OK;
     free(copy);
     if (rc != SIM_OK)
         return rc;

@@ -9,10 +9,10 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <sys/stat.h>
 
 #include "core/dict.h"
 #include "core/error.h"
+#include "core/files.h"
 #include "core/log.h"
 #include "core/time.h"
 
@@ -61,25 +61,6 @@ static int unknown_type(const struct dict *d, const char *type,
                       valid);
 }
 
-static int mkdir_p(const char *path)
-{
-    char buf[4096];
-    snprintf(buf, sizeof buf, "%s", path);
-    for (char *p = buf + 1; *p; p++) {
-        if (*p != '/')
-            continue;
-        *p = '\0';
-        if (mkdir(buf, 0777) != 0 && errno != EEXIST)
-            return sim_error(SIM_ERR_IO, "cannot create directory '%s': %s",
-                             buf, strerror(errno));
-        *p = '/';
-    }
-    if (mkdir(buf, 0777) != 0 && errno != EEXIST)
-        return sim_error(SIM_ERR_IO, "cannot create directory '%s': %s", buf,
-                         strerror(errno));
-    return SIM_OK;
-}
-
 static int read_schedule(const struct dict *d, struct fo_entry *e)
 {
     int idx;
@@ -116,7 +97,7 @@ static int open_output(struct fo_entry *e, const struct fo_scene *s,
     else
         snprintf(dir, sizeof dir, "%s/postProcessing/%s/%s", case_dir,
                  e->name, tname);
-    TRY(mkdir_p(dir));
+    TRY(files_mkdir_p(dir));
     const char *file = e->ops->file && e->ops->file[0] ? e->ops->file
                                                         : e->ops->name;
     snprintf(path, sizeof path, "%s/%s.dat", dir, file);
