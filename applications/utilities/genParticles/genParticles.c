@@ -296,6 +296,7 @@ static int run(const struct app *a)
     TRY_GOTO(rc, gen_check_memory(&c), out);
     TRY_GOTO(rc, gen_mps(&c, &m), out);
     TRY_GOTO(rc, gen_dem(&c, &g), out);
+    TRY_GOTO(rc, gen_exclude_grains(a, &c, &m, &g), out);
     TRY_GOTO(rc, gen_hydrostatic(&c, &m), out);
     dict_warn_unused(d);
     print_summary(&c);
