@@ -48,6 +48,7 @@ static int grow(struct couple_dem *cd, size_t n)
     SIM_GROW(cd->Fapplied, 3 * cap);
     SIM_GROW(cd->Fsend, 3 * cap);
     SIM_GROW(cd->work, 3 * cap);
+    SIM_GROW(cd->slip, 3 * cap);
     cd->cap = cap;
     return SIM_OK;
 }
@@ -254,6 +255,6 @@ void couple_dem_free(struct couple_dem *cd)
     couple_dem_close(cd, SIM_OK);
     free(cd->uf); free(cd->eps); free(cd->gradp); free(cd->wet);
     free(cd->fext); free(cd->V); free(cd->d); free(cd->Fapplied);
-    free(cd->Fsend); free(cd->work);
+    free(cd->Fsend); free(cd->work); free(cd->slip);
     memset(cd, 0, sizeof *cd);
 }

@@ -46,6 +46,7 @@ struct couple_dem {
     double *Fapplied;           /* 3n mean drag the grains received      */
     double *Fsend;              /* 3n mean drag of eq. (25)              */
     double *work;               /* 3n                                    */
+    double *slip;               /* 3n u_k - v_k (couple_output.h)       */
     double fluid_time;          /* time of the last fluid state          */
     long exchanges;
     double wait;                /* seconds waiting for the fluid side    */

@@ -9,7 +9,9 @@
 #   the MPS velocity noise); lab-frame speed within 15 % of 0.343 m/s;
 #   the couplingForces function object gives the buoyancy V rho_f g (1e-6);
 #   a restart from 0.02 s gives the continuous run's 0.04 s files exactly;
-#   a case without system/couplingDict runs demSolid alone (no channel).
+#   a case without system/couplingDict runs demSolid alone (no channel)
+#   and its dem.vtu has the 5 grain fields only, where the coupled run's
+#   dem.vtu and fluid.vtu have the coupling fields (couple_output.h).
 # MPSFLUID / DEMSOLID override the programs (default bin/).
 NAME=mpsDemSettling
 . "$(dirname "$0")/lib/tandem.sh"
@@ -81,4 +83,12 @@ if (cd "$c" && timeout 60 "$DEMSOLID" > log.demSolid.alone 2>&1) \
 else
     fail mpsDemSettling_uncoupled "demSolid alone: $(tail -3 "$c/log.demSolid.alone" | tr '\n' ' ')"
 fi
+# coupling fields (couple_output.h) in the coupled output only: the
+# standalone run rewrote 0.01/dem.vtu without them
+cf=$("$ROOT/bin/vtuInfo" -case "$c" 0.35/dem.vtu 0.35/fluid.vtu 2>&1 \
+     | grep -c '^field \(porosity\|fluidVelocity\|slipVelocity\|drag\|buoyancy\|reaction\) ')
+sf=$("$ROOT/bin/vtuInfo" -case "$c" 0.01/dem.vtu 2>&1 | grep -c '^field ')
+[ "$cf" = 7 ] && [ "$sf" = 5 ] \
+    && pass mpsDemSettling_couplingFieldsOnlyCoupled \
+    || fail mpsDemSettling_couplingFieldsOnlyCoupled "coupled files: $cf of 7 coupling fields; standalone dem.vtu: $sf fields (5)"
 exit $((fails > 0))

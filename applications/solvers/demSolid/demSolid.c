@@ -16,6 +16,8 @@
  * (runTandem mpsFluid demSolid): the initial state is sent, then every
  * interval receives the fluid state, advances with drag and buoyancy /
  * pressure-gradient forces, and sends the new state (couple_dem.h).
+ * Its dem.vtu also holds, per grain, porosity, fluidVelocity, slipVelocity,
+ * drag and buoyancy (B) or pressureGradientForce (A) (couple_output.h).
  */
 #include <math.h>
 #include <stdio.h>
@@ -29,6 +31,7 @@
 #include "core/log.h"
 #include "core/time.h"
 #include "coupling/couple_dem.h"
+#include "coupling/couple_output.h"
 #include "dem/dem.h"
 #include "dem/dem_case.h"
 #include "dem/functionObjects/dem_fo.h"
@@ -145,12 +148,46 @@ static int create_functions(struct solid *s)
                           &s->fos);
 }
 
+/* dem.vtu of a coupled run: the grains' fields and the coupling state of
+ * the interval that ends now (couple_output.h). */
+static int write_coupled_grains(struct solid *s, const char *path)
+{
+    struct dem *d = &s->d;
+    if (!couple_dem_output(&s->cd, d)) {
+        log_warn("t = %s: grains were removed after the last exchange; "
+                 "dem.vtu is written without the coupling fields",
+                 s->rt.name);
+        return dem_write_grains(path, d, s->rt.binary);
+    }
+    int a = s->cd.cs.model == COUPLING_MODEL_A;
+    struct vtu_field f[10] = {
+        {"radius", VTU_FLOAT64, 1, d->r},
+        {"velocity", VTU_FLOAT64, 3, d->v},
+        {"omega", VTU_FLOAT64, 3, d->w},
+        {"group", VTU_INT32, 1, d->group},
+        {"id", VTU_INT64, 1, d->id},
+        {"porosity", VTU_FLOAT64, 1, s->cd.eps},
+        {"fluidVelocity", VTU_FLOAT64, 3, s->cd.uf},
+        {"slipVelocity", VTU_FLOAT64, 3, s->cd.slip},
+        {"drag", VTU_FLOAT64, 3, s->cd.Fapplied},
+        {"", VTU_FLOAT64, 3, s->cd.fext},
+    };
+    snprintf(f[9].name, sizeof f[9].name, "%s",
+             a ? "pressureGradientForce" : "buoyancy");
+    struct vtu_cloud c = {.n = d->n, .points = d->x, .nfields = 10,
+                          .fields = f, .time = d->t};
+    return vtu_write(path, &c, s->rt.binary);
+}
+
 static int write_fields(struct solid *s)
 {
     char dir[4200], path[4400], pvd[4200], rel[256];
     TRY(time_make_dir(&s->rt, s->app.case_abs, dir, sizeof dir));
     snprintf(path, sizeof path, "%s/dem.vtu", dir);
-    TRY(dem_write_grains(path, &s->d, s->rt.binary));
+    if (s->coupled && s->cd.exchanges > 0)
+        TRY(write_coupled_grains(s, path));
+    else
+        TRY(dem_write_grains(path, &s->d, s->rt.binary));
     snprintf(path, sizeof path, "%s/demContacts", dir);
     TRY(dem_write_contacts(path, &s->d));
     snprintf(rel, sizeof rel, "%s/dem.vtu", s->rt.name);

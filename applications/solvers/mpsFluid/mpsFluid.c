@@ -15,7 +15,8 @@
  * demSolid): before each step the fluid state at the grains is sent and the
  * DEM state at the end of the step received; porosity and the reaction of
  * the grains enter the step through the solver's inv_eps and f_ext hooks
- * (couple_fluid.h). Output gains the field "porosity".
+ * (couple_fluid.h). Output gains the fields "porosity" and "reaction"
+ * (-V_i f_A,i of eq. 36, couple_output.h).
  */
 #include <math.h>
 #include <stdio.h>
@@ -31,6 +32,7 @@
 #include "core/time.h"
 #include "coupling/couple_dem.h"
 #include "coupling/couple_fluid.h"
+#include "coupling/couple_output.h"
 #include "functionObjects/functionObject.h"
 #include "io/vtu.h"
 #include "functionObjects/mps_functionObjects.h"
@@ -53,10 +55,11 @@ struct fluid {
     struct fo_list *fos;
     struct fo_scene scene;
     struct vtu_cloud cloud;
-    struct vtu_field fields[9];
+    struct vtu_field fields[10];
     struct dict *coupling;          /* coupled runs only                 */
     int coupled;
     struct couple_fluid cf;
+    struct couple_output out;
 };
 
 static int create_time(struct fluid *f)
@@ -194,7 +197,7 @@ static int create_fluid(struct fluid *f)
                            f->rt.adjust ? f->rt.max_co : 0.2);
 }
 
-static void refresh_scene(struct fluid *f)
+static int refresh_scene(struct fluid *f)
 {
     struct mps_particles *P = &f->s.P;
     struct vtu_field fl[8] = {
@@ -214,6 +217,10 @@ static void refresh_scene(struct fluid *f)
             f->cf.eps[i] = 1.0 / P->inv_eps[i];
         f->fields[nf++] = (struct vtu_field){ "porosity", VTU_FLOAT64, 1,
                                               f->cf.eps };
+        double *react;
+        TRY(couple_output_reaction(&f->out, P, &react));
+        f->fields[nf++] = (struct vtu_field){ "reaction", VTU_FLOAT64, 3,
+                                              react };
     }
     f->cloud = (struct vtu_cloud){ .n = (size_t)P->n, .points = P->x,
                                    .nfields = nf, .fields = f->fields,
@@ -237,13 +244,14 @@ static void refresh_scene(struct fluid *f)
         .spacing = f->dp, .patch_names = f->patch_names,
         .npatches = f->npatches, .values = f->values, .nvalues = nv,
         .solver = &f->s };
+    return SIM_OK;
 }
 
 static int create_functions(struct fluid *f)
 {
     static const struct fo_ops *const *const tables[] = {
         fo_generic_table, mps_fo_table, NULL };
-    refresh_scene(f);
+    TRY(refresh_scene(f));
     return fo_list_create(f->rt.functions, tables, &f->scene,
                           f->app.case_abs, f->rt.start_time, f->rt.precision,
                           &f->fos);
@@ -252,7 +260,7 @@ static int create_functions(struct fluid *f)
 static int write_fields(struct fluid *f)
 {
     char dir[4200], path[4400], pvd[4200], rel[256];
-    refresh_scene(f);
+    TRY(refresh_scene(f));
     TRY(time_make_dir(&f->rt, f->app.case_abs, dir, sizeof dir));
     snprintf(path, sizeof path, "%s/fluid.vtu", dir);
     TRY(vtu_write(path, &f->cloud, f->rt.binary));
@@ -307,11 +315,13 @@ static int step(struct fluid *f)
         && (rc = couple_fluid_exchange(&f->cf, s, f->rt.step, f->rt.value,
                                        f->rt.dt)))
         return coupled_failure(f, rc);
+    if (f->coupled && (rc = couple_output_snapshot(&f->out, &f->cf, &s->P)))
+        return rc;
     rc = mps_step(s, f->rt.dt);
     time_increment(&f->rt);
     if (rc)
         return failed(f, rc);
-    refresh_scene(f);
+    TRY(refresh_scene(f));
     TRY(fo_list_execute(f->fos, &f->scene, f->rt.write_now));
     if (f->rt.write_now) {
         TRY(write_fields(f));
@@ -359,6 +369,7 @@ static void final_stats(const struct fluid *f)
 static void cleanup(struct fluid *f)
 {
     couple_fluid_free(&f->cf);
+    couple_output_free(&f->out);
     dict_free(f->coupling);
     fo_list_free(f->fos);
     mps_solver_free(&f->s);
