@@ -254,6 +254,29 @@ res=$(awk '/^# x y z/ { go = 1; next } go && NF > 6 { x[n] = $1; y[n] = $2; z[n]
 # jitter 0.00048: first centre 0.00298 in, so 5 x 5 x 3
 expect jitter_grains "$res" "75 apart jittered"
 
+# ---- fluid jitter: fluid particles within +-jitter dp of their lattice site,
+# walls and counts unchanged, deterministic for a seed ------------------------
+newcase fjit 's/hydrostaticPressure yes;/hydrostaticPressure yes; jitter 0.2; seed 3;/'
+newcase fjit0
+sites() {  # case: "n_fluid n_wall maxdev(fluid) maxdev(wall) moved" (dev in dp)
+    "$INFO" -case "$TMP/$1" -dump 0/fluid.vtu | awk '
+        /^# x y z/ { for (i = 2; i <= NF; i++) col[$i] = i - 1; go = 1; next }
+        go && NF > 6 { t = $col["type"]; m = 0
+            for (d = 1; d <= 3; d++) { f = $d / 0.01 - 0.5; e = f - int(f + (f < 0 ? -0.5 : 0.5))
+                e = e < 0 ? -e : e; if (e > m) m = e }
+            if (t == 0) { nf++; if (m > mf) mf = m; if (m > 1e-6) mv++ }
+            else { nw++; if (m > mw) mw = m } }
+        END { printf "%d %d %.3f %.3f %s\n", nf, nw, mf, mw, (mv > nf / 2 ? "moved" : "regular") }'
+}
+if run fjit && cp "$TMP/fjit/0/fluid.vtu" "$TMP/fjit1.vtu" && run fjit && run fjit0 \
+   && cmp -s "$TMP/fjit1.vtu" "$TMP/fjit/0/fluid.vtu"; then
+    a=$(sites fjit); b=$(sites fjit0)
+    set -- $a; read -r nf0 nw0 _ <<< "$b"
+    if [ "$1 $2" = "$nf0 $nw0" ] && awk -v f="$3" -v w="$4" 'BEGIN { exit !(f <= 0.2 && f > 0.1 && w < 1e-6) }' \
+       && [ "$5" = moved ]; then pass "fluid_jitter ($a)"
+    else fail fluid_jitter "jittered: $a; lattice: $b (counts equal, fluid dev in (0.1, 0.2] dp, walls 0)"; fi
+else fail fluid_jitter "genParticles failed or two runs with seed 3 differ"; fi
+
 # ---- bad input: exit 1, file:line, nothing written --------------------------
 bad() {  # name phrase sed-edits...
     local name=$1 phrase=$2; shift 2
@@ -278,6 +301,8 @@ bad too_big "would need about .* bytes" 's/^dp           0.01;/dp 1e-6;/'
 bad no_kernel_radius "wallLayers auto needs" 's/^kernelRadius 2.1;//'
 bad grain_overlap "grains would overlap" 's/diameter 0.005;/diameter 0.006;/'
 bad open_face "unknown face 'top'" 's/open    (zmax);/open (top);/'
+bad fluid_jitter "jitter of a fluid region must be between 0 and 0.25" \
+    's/hydrostaticPressure yes;/hydrostaticPressure yes; jitter 0.3;/'
 no_leftovers leftovers_bad too_big
 
 # with MPSDEM_BIN=bin-san: a sanitizer report anywhere is a failure, even in

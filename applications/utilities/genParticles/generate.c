@@ -246,6 +246,33 @@ static void claim_boxes(struct gen_case *c)
     }
 }
 
+/* `jitter` of a fluid region: its fluid particles shifted by up to
+ * +-jitter dp per coordinate (lattice_jitter, the grains' generator, over
+ * the region's particles in lattice order: same seed, same cloud). The
+ * free-surface height stays the lattice's (r->top). */
+static int jitter_fluid(const struct gen_case *c, struct mps_cloud *m)
+{
+    for (int i = 0; i < c->nregions; i++) {
+        const struct region *r = &c->r[i];
+        if (r->type != REGION_FLUID || !(r->jitter > 0))
+            continue;
+        size_t n = 0;
+        double *x = sim_calloc(3 * (r->count[TYPE_FLUID] + 1), sizeof *x);
+        if (!x)
+            return SIM_ERR_NOMEM;
+        for (size_t k = 0; k < m->n; k++)
+            if (m->region[k] == i && m->type[k] == TYPE_FLUID)
+                memcpy(x + 3 * n++, m->x + 3 * k, 3 * sizeof *x);
+        lattice_jitter(x, n, c->dim, r->jitter * c->dp, (uint64_t)r->seed);
+        n = 0;
+        for (size_t k = 0; k < m->n; k++)
+            if (m->region[k] == i && m->type[k] == TYPE_FLUID)
+                memcpy(m->x + 3 * k, x + 3 * n++, 3 * sizeof *x);
+        free(x);
+    }
+    return SIM_OK;
+}
+
 int gen_mps(struct gen_case *c, struct mps_cloud *m)
 {
     struct lattice l = { LATTICE_CUBIC, c->dim,
@@ -269,6 +296,7 @@ int gen_mps(struct gen_case *c, struct mps_cloud *m)
         if (m->type[k] == TYPE_FLUID)
             r->top = fmax(r->top, m->x[3 * k + c->vertical] + 0.5 * c->dp);
     }
+    TRY(jitter_fluid(c, m));
     return check_counts(c, 0);
 }
 

@@ -148,6 +148,14 @@ static int read_region(const struct gen_case *c, struct region *r)
         break;
     case REGION_FLUID:
         TRY(dict_get_bool_or(d, "hydrostaticPressure", 0, &r->hydrostatic));
+        /* the lattice fraction dp/4 keeps particles at least dp/2 apart
+         * and inside the walls (the first site is dp/2 from a wall) */
+        TRY(dict_get_scalar_or(d, "jitter", 0.0, &r->jitter));
+        if (!(r->jitter >= 0 && r->jitter <= 0.25))
+            return dict_error(d, "jitter", SIM_ERR_DICT, "jitter of a fluid "
+                              "region must be between 0 and 0.25 (a "
+                              "fraction of dp), got %g", r->jitter);
+        TRY(dict_get_label_or(d, "seed", 1, &r->seed));
         r->has_surface = dict_has(d, "surfaceHeight");
         if (r->has_surface)
             TRY(dict_get_scalar_dim(d, "surfaceHeight", dims_length,
