@@ -1,9 +1,9 @@
 #!/bin/bash
 # demColumnCollapse.sh — the granularColumnCollapse tutorial cut to a
 # 6 x 6 x 6 block (216 beads) released in air for 0.3 s (quick E2-09):
-#   - the block settles: E_k after 0.25 s stays below 1e-4 of its peak (a
-#     lightly damped rattling of zero-overlap neighbours keeps it near
-#     1e-9 J, see the tutorial's README);
+#   - the block settles (E2-09, per bead): E_k after 0.2 s stays below
+#     1e-9 J x 216/7425 (the tutorial's printed dashpot, restitutionConstant;
+#     with the default restitution damping the columns ring, see its README);
 #   - the floor carries the weight: wallForces on the tank, averaged over
 #     the last 0.1 s (every step), equals -N m g within 2 %;
 #   - no bead is lost; the front never moves backwards of the block face.
@@ -24,10 +24,10 @@ if ! (cd "$c" && "$ROOT/bin/genParticles" > log.genParticles 2>&1 \
     echo "FAIL columnCollapse: run failed"; tail -5 "$c/log.demSolid"; exit 1
 fi
 P="$c/postProcessing"
-read -r peak late < <(awk '!/^#/ {if ($4 > m) m = $4; if ($1 > 0.25 && $4 > l) l = $4}
+read -r peak late < <(awk '!/^#/ {if ($4 > m) m = $4; if ($1 > 0.2 && $4 > l) l = $4}
     END {printf "%.4g %.4g\n", m, l}' "$P/energy/0/kineticEnergy.dat")
-if awk -v p="$peak" -v l="$late" 'BEGIN{exit !(p > 0 && l < 1e-4 * p)}'; then
-    echo "PASS columnCollapse settles: E_k peak $peak J, max after 0.25 s $late J (< 1e-4 peak)"
+if awk -v p="$peak" -v l="$late" 'BEGIN{exit !(p > 0 && l < 1e-9 * 216 / 7425)}'; then
+    echo "PASS columnCollapse settles: E_k peak $peak J, max after 0.2 s $late J (< 2.9e-11 J)"
 else
     echo "FAIL columnCollapse settles: E_k peak $peak J, max after 0.25 s $late J"; fails=$((fails+1))
 fi

@@ -128,6 +128,7 @@ extern const struct contact_normal_ops contact_normal_linear;
 extern const struct contact_normal_ops contact_normal_hertz;
 extern const struct contact_damping_ops contact_damping_none;
 extern const struct contact_damping_ops contact_damping_restitution;
+extern const struct contact_damping_ops contact_damping_restitution_constant;
 extern const struct contact_tangential_ops contact_tangential_none;
 extern const struct contact_tangential_ops contact_tangential_coulomb;
 extern const struct contact_rolling_ops contact_rolling_none;

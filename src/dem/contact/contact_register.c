@@ -9,7 +9,8 @@
 const struct contact_normal_ops *const contact_normal_table[] = {
     &contact_normal_hertz, &contact_normal_linear, NULL};
 const struct contact_damping_ops *const contact_damping_table[] = {
-    &contact_damping_restitution, &contact_damping_none, NULL};
+    &contact_damping_restitution, &contact_damping_restitution_constant,
+    &contact_damping_none, NULL};
 const struct contact_tangential_ops *const contact_tangential_table[] = {
     &contact_tangential_coulomb, &contact_tangential_none, NULL};
 const struct contact_rolling_ops *const contact_rolling_table[] = {
