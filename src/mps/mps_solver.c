@@ -119,7 +119,13 @@ int mps_solver_init(struct mps_solver *s, struct mps_particles *P,
     set_box(s);
     TRY(alloc_work(s));
     TRY(mps_neighbours(s));
+    /* Partners are searched over the whole list radius (skin included),
+     * then the rows go back to the operators' radius. */
+    s->nl.rc = s->r_list;
+    neighbour_update(&s->nl, s->P.x);
     TRY(mps_find_partners(s));
+    s->nl.rc = s->re_max;
+    neighbour_update(&s->nl, s->P.x);
     return SIM_OK;
 }
 
@@ -143,7 +149,7 @@ void mps_solver_free(struct mps_solver *s)
 
 static int grow_weights(struct mps_solver *s)
 {
-    size_t want = (size_t)s->nl.nnz + 1;
+    size_t want = (size_t)s->nl.nnz_cand + 1;  /* bound of every update */
     if (want <= s->cap_w)
         return SIM_OK;
     size_t c = want + want / 4;
@@ -197,21 +203,6 @@ static int list_still_valid(const struct mps_solver *s)
     return sqrt(m) + pred < half;
 }
 
-/* Reused list: re-measure every pair at the current positions. */
-static void remeasure(struct mps_solver *s)
-{
-    struct mps_particles *P = &s->P;
-    struct neighbour_list *nl = &s->nl;
-#pragma omp parallel for schedule(static)
-    for (int i = 0; i < P->n; i++)
-        for (int64_t k = nl->start[i]; k < nl->start[i + 1]; k++) {
-            const double *a = P->x + 3 * i, *b = P->x + 3 * nl->j[k];
-            nl->r[k] = sqrt((b[0] - a[0]) * (b[0] - a[0])
-                            + (b[1] - a[1]) * (b[1] - a[1])
-                            + (b[2] - a[2]) * (b[2] - a[2]));
-        }
-}
-
 void mps_request_rebuild(struct mps_solver *s)
 {
     s->rebuild = 1;
@@ -221,15 +212,18 @@ int mps_neighbours(struct mps_solver *s)
 {
     struct mps_particles *P = &s->P;
     const struct mps_settings *S = &s->S;
+    /* Cells of half the list radius: the search visits ~2.5x fewer
+     * candidates than with the 27 cells of the full radius. */
+    const double cell_h = 0.5 * s->r_list;
     if (list_still_valid(s)) {
-        remeasure(s);
+        neighbour_update(&s->nl, P->x);   /* pairs within re_max only */
         mps_weights(s);
         return SIM_OK;
     }
     s->n_builds++;
     s->t.builds++;
     s->rebuild = 0;
-    TRY(cells_build(&s->grid, P->dim, P->x, P->n, s->r_list, s->box_lo,
+    TRY(cells_build(&s->grid, P->dim, P->x, P->n, cell_h, s->box_lo,
                     s->box_hi));
     if (s->grid.n_outside) {
         int lost = mps_particles_drop_outside(s);
@@ -244,17 +238,18 @@ int mps_neighbours(struct mps_solver *s)
                              "%g): the run is unstable or the tank is open",
                              s->n_escaped, s->n_fluid0,
                              S->max_escape_fraction);
-        TRY(cells_build(&s->grid, P->dim, P->x, P->n, s->r_list, s->box_lo,
+        TRY(cells_build(&s->grid, P->dim, P->x, P->n, cell_h, s->box_lo,
                         s->box_hi));
     }
     if (S->renumber_interval > 0
         && (s->n_builds - 1) % S->renumber_interval == 0) {
         memcpy(s->perm, s->grid.order, sizeof *s->perm * P->n);
         mps_particles_permute(s, s->perm, P->n);
-        TRY(cells_build(&s->grid, P->dim, P->x, P->n, s->r_list, s->box_lo,
+        TRY(cells_build(&s->grid, P->dim, P->x, P->n, cell_h, s->box_lo,
                         s->box_hi));
     }
-    TRY(neighbour_build(&s->nl, &s->grid, P->x, s->r_list));
+    TRY(neighbour_build_skin(&s->nl, &s->grid, P->x, s->re_max,
+                             s->r_list - s->re_max));
     memcpy(s->x_ref, P->x, sizeof *P->x * 3 * P->n);
     TRY(grow_weights(s));
     mps_weights(s);

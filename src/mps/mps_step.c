@@ -53,7 +53,6 @@ static void predict(struct mps_solver *s, double dt)
 static void predict_positions(struct mps_solver *s, double dt, double sign)
 {
     struct mps_particles *P = &s->P;
-    struct neighbour_list *nl = &s->nl;
 #pragma omp parallel for schedule(static)
     for (int i = 0; i < P->n; i++)
         if (P->type[i] == MPS_FLUID)
@@ -61,14 +60,7 @@ static void predict_positions(struct mps_solver *s, double dt, double sign)
                 P->x[3 * i + q] += sign * dt * s->ustar[3 * i + q];
     if (sign < 0)
         return;
-#pragma omp parallel for schedule(static)
-    for (int i = 0; i < P->n; i++)
-        for (int64_t k = nl->start[i]; k < nl->start[i + 1]; k++) {
-            const double *a = P->x + 3 * i, *b = P->x + 3 * nl->j[k];
-            nl->r[k] = sqrt((b[0] - a[0]) * (b[0] - a[0])
-                            + (b[1] - a[1]) * (b[1] - a[1])
-                            + (b[2] - a[2]) * (b[2] - a[2]));
-        }
+    neighbour_update(&s->nl, P->x);   /* from the candidates (skin) */
     mps_weights(s);
 }
 

@@ -1,13 +1,31 @@
-/* neighbour.c — see neighbour.h. Two passes over the cells (count, fill) so
- * that rows are written in parallel without locks. */
+/* neighbour.c — see neighbour.h.
+ *
+ * Build: each particle visits only the runs of cells that can hold a point
+ * within the cut-off (per row of cells along x, the x-extent left by the
+ * row's distance in y and z), so that with cells of half the cut-off about
+ * 2.5x fewer candidates are tested than with the 27 cells of side rc. Each
+ * thread writes the rows of its contiguous block into its own buffer in a
+ * single pass; the blocks are then copied into place (no count pass, no
+ * locks). Rows keep the cell-traversal order (z, then y, then x).
+ *
+ * Update: one pass over each thread's block of candidates keeps the
+ * indices of those within the cut-off in a scratch laid out like the
+ * candidates; once the blocks' counts are known, a second pass writes them
+ * into place with their distances (recomputed: cheaper than storing them
+ * for every candidate). */
 #include "particles/neighbour.h"
 
 #include <math.h>
+#include <omp.h>
 #include <stdlib.h>
 #include <string.h>
 
 #include "core/error.h"
 #include "particles/cells.h"
+
+/* Relative widening of the cell ranges, far above the round-off of the
+ * cell coordinates, so that no pair within the cut-off is missed. */
+#define RANGE_EPS 1e-9
 
 static int reserve_rows(struct neighbour_list *nl, int n)
 {
@@ -17,6 +35,10 @@ static int reserve_rows(struct neighbour_list *nl, int n)
         if (!s)
             return SIM_ERR_NOMEM;
         nl->start = s;
+        s = sim_realloc(nl->cstart, c * sizeof *s);
+        if (!s)
+            return SIM_ERR_NOMEM;
+        nl->cstart = s;
         nl->cap_n = c;
     }
     nl->n = n;
@@ -40,50 +62,283 @@ static int reserve_entries(struct neighbour_list *nl, int64_t nnz)
     return SIM_OK;
 }
 
-/* Visit the 3^d cells around particle i; count (out == NULL) or fill. */
-static int64_t scan(const struct cell_grid *g, const double *x, int i,
-                    double rc2, int32_t *oj, double *or_)
+static int reserve_candidates(struct neighbour_list *nl, int64_t nnz)
 {
-    int64_t m = 0;
-    int64_t c = g->cell_of[i];
-    if (c == g->ncell)
-        return 0;
-    const int nx = g->nc[0], ny = g->nc[1], nz = g->nc[2];
-    int ic[3] = { (int)(c % nx), (int)(c / nx % ny), (int)(c / nx / ny) };
-    const double *xi = x + 3 * i;
-    int zlo = g->dim == 3 ? -1 : 0, zhi = g->dim == 3 ? 1 : 0;
-    for (int dz = zlo; dz <= zhi; dz++) {
-        int kz = ic[2] + dz;
-        if (kz < 0 || kz >= nz)
-            continue;
-        for (int dy = -1; dy <= 1; dy++) {
-            int ky = ic[1] + dy;
-            if (ky < 0 || ky >= ny)
+    if ((size_t)nnz <= nl->cap_cand)
+        return SIM_OK;
+    size_t c = (size_t)nnz + (size_t)nnz / 4 + 64;
+    int32_t *j = sim_realloc(nl->cj, c * sizeof *j);
+    if (!j)
+        return SIM_ERR_NOMEM;
+    nl->cj = j;
+    j = sim_realloc(nl->sj, c * sizeof *j);
+    if (!j)
+        return SIM_ERR_NOMEM;
+    nl->sj = j;
+    nl->cap_cand = c;
+    return SIM_OK;
+}
+
+/* One row buffer per thread, plus the count of entries each holds. */
+static int reserve_buffers(struct neighbour_list *nl, int nth)
+{
+    if (nth <= nl->nbuf)
+        return SIM_OK;
+    int32_t **b = sim_realloc(nl->buf, (size_t)nth * sizeof *b);
+    if (!b)
+        return SIM_ERR_NOMEM;
+    nl->buf = b;
+    size_t *c = sim_realloc(nl->cap_buf, (size_t)nth * sizeof *c);
+    if (!c)
+        return SIM_ERR_NOMEM;
+    nl->cap_buf = c;
+    int64_t *k = sim_realloc(nl->blk, (size_t)nth * sizeof *k);
+    if (!k)
+        return SIM_ERR_NOMEM;
+    nl->blk = k;
+    for (int t = nl->nbuf; t < nth; t++) {
+        nl->buf[t] = NULL;
+        nl->cap_buf[t] = 0;
+    }
+    nl->nbuf = nth;
+    return SIM_OK;
+}
+
+static double dist2(const double *a, const double *b)
+{
+    return (b[0] - a[0]) * (b[0] - a[0]) + (b[1] - a[1]) * (b[1] - a[1])
+         + (b[2] - a[2]) * (b[2] - a[2]);
+}
+
+/* Cells [*c0, *c1] along axis k that can hold a point within d of p. */
+static void axis_range(const struct cell_grid *g, int k, double p, double d,
+                       int *c0, int *c1)
+{
+    double s0 = floor((p - d - g->lo[k]) / g->h);
+    double s1 = floor((p + d - g->lo[k]) / g->h);
+    *c0 = s0 < 0 ? 0 : s0 >= g->nc[k] ? g->nc[k] : (int)s0;
+    *c1 = s1 >= g->nc[k] - 1 ? g->nc[k] - 1 : s1 < 0 ? -1 : (int)s1;
+}
+
+/* Distance from p to the slab of cell c along axis k; the last cell is
+ * open above (cells_locate clamps round-off overshoot into it). */
+static double slab_gap(const struct cell_grid *g, int k, double p, int c)
+{
+    double a = g->lo[k] + c * g->h, b = a + g->h;
+    if (p < a)
+        return a - p;
+    return p > b && c < g->nc[k] - 1 ? p - b : 0.0;
+}
+
+enum { MAX_RUNS = 64 };
+struct run { int64_t a, b; };
+
+/* Runs of order[] holding every particle within rc of particle i (and
+ * others); returns how many, their total length in *len. */
+static int runs(const struct cell_grid *g, const double *xi, double rc,
+                struct run *rn, int64_t *len)
+{
+    const double d = rc * (1 + RANGE_EPS);
+    int y0, y1, z0 = 0, z1 = 0, m = 0;
+    axis_range(g, 1, xi[1], d, &y0, &y1);
+    if (g->dim == 3)
+        axis_range(g, 2, xi[2], d, &z0, &z1);
+    *len = 0;
+    for (int kz = z0; kz <= z1; kz++) {
+        double gz = g->dim == 3 ? slab_gap(g, 2, xi[2], kz) : 0.0;
+        for (int ky = y0; ky <= y1; ky++) {
+            double gy = slab_gap(g, 1, xi[1], ky);
+            double rem = d * d - gy * gy - gz * gz;
+            if (rem < 0 || m == MAX_RUNS)
                 continue;
-            int kx0 = ic[0] > 0 ? ic[0] - 1 : 0;
-            int kx1 = ic[0] < nx - 1 ? ic[0] + 1 : nx - 1;
+            int x0, x1;
+            axis_range(g, 0, xi[0], sqrt(rem), &x0, &x1);
+            if (x0 > x1)
+                continue;
             /* The x-neighbours of one row are contiguous in cell order. */
-            int64_t base = (int64_t)nx * (ky + (int64_t)ny * kz);
-            for (int64_t s = g->start[base + kx0]; s < g->start[base + kx1 + 1];
-                 s++) {
-                int j = g->order[s];
-                if (j == i)
-                    continue;
-                const double *xj = x + 3 * j;
-                double dx = xj[0] - xi[0], dy2 = xj[1] - xi[1],
-                       dz2 = xj[2] - xi[2];
-                double r2 = dx * dx + dy2 * dy2 + dz2 * dz2;
-                if (r2 < rc2) {
-                    if (oj) {
-                        oj[m] = j;
-                        or_[m] = sqrt(r2);
-                    }
-                    m++;
-                }
-            }
+            int64_t base = (int64_t)g->nc[0] * (ky + (int64_t)g->nc[1] * kz);
+            rn[m].a = g->start[base + x0];
+            rn[m].b = g->start[base + x1 + 1];
+            *len += rn[m].b - rn[m].a;
+            m++;
         }
     }
     return m;
+}
+
+/* Candidates of particle i into out (room for every particle of the runs
+ * is guaranteed by the caller); returns how many. */
+static int64_t scan(const struct cell_grid *g, const double *x, int i,
+                    double rc2, const struct run *rn, int nrun, int32_t *out)
+{
+    int64_t m = 0;
+    const double *xi = x + 3 * i;
+    for (int q = 0; q < nrun; q++)
+        for (int64_t s = rn[q].a; s < rn[q].b; s++) {
+            int j = g->order[s];
+            if (j != i && dist2(xi, x + 3 * j) < rc2)
+                out[m++] = j;
+        }
+    return m;
+}
+
+/* Rows [a, b) of this thread into its buffer; counts in cstart[i]. */
+static int scan_block(struct neighbour_list *nl, const struct cell_grid *g,
+                      const double *x, double rc, int t, int a, int b,
+                      int64_t *used)
+{
+    struct run rn[MAX_RUNS];
+    const double rc2 = rc * rc;
+    int64_t m = 0;
+    for (int i = a; i < b; i++) {
+        nl->cstart[i] = 0;
+        if (g->cell_of[i] == g->ncell)
+            continue;
+        int64_t len;
+        int nrun = runs(g, x + 3 * i, rc, rn, &len);
+        if ((size_t)(m + len) > nl->cap_buf[t]) {
+            size_t c = (size_t)(m + len) * 2 + 1024;
+            int32_t *p = sim_realloc(nl->buf[t], c * sizeof *p);
+            if (!p)
+                return SIM_ERR_NOMEM;
+            nl->buf[t] = p;
+            nl->cap_buf[t] = c;
+        }
+        nl->cstart[i] = scan(g, x, i, rc2, rn, nrun, nl->buf[t] + m);
+        m += nl->cstart[i];
+    }
+    *used = m;
+    return SIM_OK;
+}
+
+static int build_candidates(struct neighbour_list *nl,
+                            const struct cell_grid *g, const double *x,
+                            double rl)
+{
+    const int n = g->n;
+    TRY(reserve_buffers(nl, omp_get_max_threads()));
+    int64_t *used = nl->blk;
+    int err = SIM_OK;
+#pragma omp parallel
+    {
+        int t = omp_get_thread_num(), nt = omp_get_num_threads();
+        int a = (int)((int64_t)n * t / nt), b = (int)((int64_t)n * (t + 1) / nt);
+        int rc = scan_block(nl, g, x, rl, t, a, b, &used[t]);
+        if (rc) {
+#pragma omp atomic write
+            err = rc;
+        }
+#pragma omp barrier
+#pragma omp single
+        {
+            int64_t acc = 0;
+            for (int i = 0; i < n; i++) {
+                int64_t c = nl->cstart[i];
+                nl->cstart[i] = acc;
+                acc += c;
+            }
+            nl->cstart[n] = acc;
+            nl->nnz_cand = acc;
+            if (!err)
+                err = reserve_candidates(nl, acc);
+        }
+        if (!err && used[t])
+            memcpy(nl->cj + nl->cstart[a], nl->buf[t],
+                   (size_t)used[t] * sizeof *nl->cj);
+    }
+    return err;
+}
+
+int neighbour_build_skin(struct neighbour_list *nl, const struct cell_grid *g,
+                         const double *x, double rc, double skin)
+{
+    const double rl = rc + skin;
+    if (!(rc > 0) || !(skin >= 0) || g->h < 0.5 * rl * (1 - 1e-12))
+        return sim_error(SIM_ERR_INPUT, "neighbour_build: cut-off %g (skin "
+                         "%g) more than twice the cell size %g", rc, skin,
+                         g->h);
+    TRY(reserve_rows(nl, g->n));
+    nl->rc = rc;
+    nl->skin = skin;
+    TRY(build_candidates(nl, g, x, rl));
+    TRY(reserve_entries(nl, nl->nnz_cand));
+    neighbour_update(nl, x);
+    return SIM_OK;
+}
+
+int neighbour_build(struct neighbour_list *nl, const struct cell_grid *g,
+                    const double *x, double rc)
+{
+    return neighbour_build_skin(nl, g, x, rc, 0.0);
+}
+
+/* Candidates of rows [a, b) within rc2: their indices into the scratch
+ * at the candidate offsets, counts into start[i]. Branch-free (about half
+ * the candidates are kept, in no predictable pattern); the store one past
+ * a full row lands in the next row's first slot, rewritten afterwards,
+ * except past the block's last row, which another thread owns: that row
+ * takes the branch. */
+static int64_t select_block(struct neighbour_list *nl, const double *x,
+                            double rc2, int a, int b)
+{
+    int64_t tot = 0;
+    for (int i = a; i < b; i++) {
+        const double *xi = x + 3 * i;
+        int64_t k0 = nl->cstart[i], k1 = nl->cstart[i + 1], pos = k0;
+        if (i < b - 1) {
+            for (int64_t k = k0; k < k1; k++) {
+                int j = nl->cj[k];
+                nl->sj[pos] = j;
+                pos += dist2(xi, x + 3 * j) < rc2;
+            }
+        } else {
+            for (int64_t k = k0; k < k1; k++) {
+                int j = nl->cj[k];
+                if (dist2(xi, x + 3 * j) < rc2)
+                    nl->sj[pos++] = j;
+            }
+        }
+        nl->start[i] = pos - k0;
+        tot += pos - k0;
+    }
+    return tot;
+}
+
+void neighbour_update(struct neighbour_list *nl, const double *x)
+{
+    const int n = nl->n;
+    const double rc2 = nl->rc * nl->rc;
+    int64_t *cnt = nl->blk;
+    /* blk holds nbuf counts: never more threads than at the build */
+    int nth = omp_get_max_threads() < nl->nbuf ? omp_get_max_threads()
+                                               : nl->nbuf;
+    if (nth < 1)
+        return;   /* brute-force list: no candidates */
+#pragma omp parallel num_threads(nth)
+    {
+        int t = omp_get_thread_num(), nt = omp_get_num_threads();
+        int a = (int)((int64_t)n * t / nt), b = (int)((int64_t)n * (t + 1) / nt);
+        cnt[t] = select_block(nl, x, rc2, a, b);
+#pragma omp barrier
+        int64_t off = 0;
+        for (int u = 0; u < t; u++)
+            off += cnt[u];
+        for (int i = a; i < b; i++) {
+            int64_t len = nl->start[i], k0 = nl->cstart[i];
+            nl->start[i] = off;
+            const double *xi = x + 3 * i;
+            for (int64_t m = 0; m < len; m++) {
+                int j = nl->sj[k0 + m];
+                nl->j[off + m] = j;
+                nl->r[off + m] = sqrt(dist2(xi, x + 3 * j));
+            }
+            off += len;
+        }
+        if (t == nt - 1) {
+            nl->start[n] = off;
+            nl->nnz = off;
+        }
+    }
 }
 
 static void prefix(struct neighbour_list *nl)
@@ -98,27 +353,6 @@ static void prefix(struct neighbour_list *nl)
     nl->nnz = acc;
 }
 
-int neighbour_build(struct neighbour_list *nl, const struct cell_grid *g,
-                    const double *x, double rc)
-{
-    if (!(rc > 0) || g->h < rc * (1 - 1e-12))
-        return sim_error(SIM_ERR_INPUT, "neighbour_build: cut-off %g larger "
-                         "than the cell size %g", rc, g->h);
-    const int n = g->n;
-    const double rc2 = rc * rc;
-    TRY(reserve_rows(nl, n));
-    nl->rc = rc;
-#pragma omp parallel for schedule(dynamic, 256)
-    for (int i = 0; i < n; i++)
-        nl->start[i] = scan(g, x, i, rc2, NULL, NULL);
-    prefix(nl);
-    TRY(reserve_entries(nl, nl->nnz));
-#pragma omp parallel for schedule(dynamic, 256)
-    for (int i = 0; i < n; i++)
-        scan(g, x, i, rc2, nl->j + nl->start[i], nl->r + nl->start[i]);
-    return SIM_OK;
-}
-
 static int finite3(const double *p)
 {
     return isfinite(p[0]) && isfinite(p[1]) && isfinite(p[2]);
@@ -130,6 +364,7 @@ int neighbour_build_brute(struct neighbour_list *nl, int dim, const double *x,
     (void)dim;
     TRY(reserve_rows(nl, n));
     nl->rc = rc;
+    nl->nnz_cand = 0;   /* no candidates: not for neighbour_update */
     for (int pass = 0; pass < 2; pass++) {
         for (int i = 0; i < n; i++) {
             int64_t m = 0, base = pass ? nl->start[i] : 0;
@@ -165,5 +400,13 @@ void neighbour_free(struct neighbour_list *nl)
     free(nl->start);
     free(nl->j);
     free(nl->r);
+    free(nl->cstart);
+    free(nl->cj);
+    free(nl->sj);
+    for (int t = 0; t < nl->nbuf; t++)
+        free(nl->buf[t]);
+    free(nl->buf);
+    free(nl->cap_buf);
+    free(nl->blk);
     memset(nl, 0, sizeof *nl);
 }

@@ -8,6 +8,14 @@
  * but is never released until neighbour_free(), so that the time loop does
  * not allocate once sizes have settled.
  *
+ * Skin (Verlet list): neighbour_build_skin() also keeps the candidate
+ * pairs within rc + skin (indices only). neighbour_update() re-selects the
+ * rows from them at new positions: every pair within rc, with its distance,
+ * which is exact while no particle has moved more than skin/2 since the
+ * build. The rows then hold only pairs within rc, so that the operators
+ * never loop over the skin's zero-weight pairs; the update costs one pass
+ * over the candidates and allocates nothing.
+ *
  * neighbour_build_brute() is the O(n^2) reference the fast build is tested
  * against (SWIFT test27cells): same contract, rows in increasing j.
  */
@@ -27,14 +35,33 @@ struct neighbour_list {
     int32_t *j;       /* nnz neighbour indices                          */
     double *r;        /* nnz distances [m]                              */
     size_t cap_n, cap_nnz;
+    /* candidates within rc + skin (neighbour_build_skin) */
+    double skin;      /* [m]                                            */
+    int64_t nnz_cand; /* candidate pairs; nnz <= nnz_cand               */
+    int64_t *cstart;  /* n+1                                            */
+    int32_t *cj;      /* nnz_cand                                       */
+    int32_t *sj;      /* cap_cand: scratch of neighbour_update()        */
+    size_t cap_cand;
+    int nbuf;         /* per-thread row buffers of the build            */
+    int32_t **buf;
+    size_t *cap_buf;
+    int64_t *blk;     /* nbuf: entries of each thread's block           */
 };
 
-/* Build from a grid of the same positions (g->h >= rc is required). */
+/* Build from a grid of the same positions (g->h >= rc / 2 is required). */
 int neighbour_build(struct neighbour_list *nl, const struct cell_grid *g,
                     const double *x, double rc);
 
+/* The same with candidates within rc + skin for neighbour_update()
+ * (g->h >= (rc + skin) / 2). */
+int neighbour_build_skin(struct neighbour_list *nl, const struct cell_grid *g,
+                         const double *x, double rc, double skin);
+
+/* Rows from the candidates at positions x (see above). */
+void neighbour_update(struct neighbour_list *nl, const double *x);
+
 /* O(n^2) reference; particles with non-finite positions have no
- * neighbours. */
+ * neighbours. It keeps no candidates (no neighbour_update). */
 int neighbour_build_brute(struct neighbour_list *nl, int dim, const double *x,
                           int n, double rc);
 

@@ -1,6 +1,7 @@
 /* test_neighbour.c — cell lists and CSR neighbour lists against the O(n^2)
  * reference on random sets (2-D and 3-D, with particles outside the box and
- * NaN positions), and cell-order renumbering. */
+ * NaN positions; cells of the cut-off and of half of it; a Verlet list with
+ * a skin updated after moves), and cell-order renumbering. */
 #include <setjmp.h>
 #include <stdarg.h>
 #include <stddef.h>
@@ -84,7 +85,44 @@ static void random_case(int dim, int n, double rc, double h, int with_box)
     free(x);
 }
 
+/* Verlet list: candidates within rc + skin on cells of (rc + skin) / 2,
+ * then rows re-selected after every particle moved by less than skin/2
+ * equal the brute-force list at the new positions, twice in a row. */
+static void skin_case(int dim, int n, double rc, double skin, double h)
+{
+    double *x = calloc(3 * (size_t)n, sizeof *x);
+    for (int i = 0; i < n; i++)
+        for (int k = 0; k < dim; k++)
+            x[3 * i + k] = urand();
+    x[0] = 7.0;
+    double lo[3] = { 0, 0, 0 }, hi[3] = { 1, 1, 1 };
+    struct cell_grid g = { 0 };
+    struct neighbour_list fast = { 0 }, ref = { 0 };
+    assert_int_equal(cells_build(&g, dim, x, n, h, lo, hi), 0);
+    assert_int_equal(neighbour_build_skin(&fast, &g, x, rc, skin), 0);
+    x[0] = NAN;
+    assert_int_equal(neighbour_build_brute(&ref, dim, x, n, rc), 0);
+    compare(&fast, &ref, x);
+    assert_true(fast.nnz_cand > fast.nnz);
+    const double a = 0.499 * skin / sqrt(dim) / 2; /* two moves < skin/2 */
+    for (int move = 0; move < 2; move++) {
+        for (int i = 0; i < n; i++)
+            for (int k = 0; k < dim; k++)
+                x[3 * i + k] += a * (2 * urand() - 1);
+        neighbour_update(&fast, x);
+        assert_int_equal(neighbour_build_brute(&ref, dim, x, n, rc), 0);
+        compare(&fast, &ref, x);
+    }
+    cells_free(&g);
+    neighbour_free(&fast);
+    neighbour_free(&ref);
+    free(x);
+}
+
+static void test_skin_3d(void **s) { (void)s; skin_case(3, 3000, 0.07, 0.03, 0.05); }
+static void test_skin_2d(void **s) { (void)s; skin_case(2, 3000, 0.05, 0.02, 0.07); }
 static void test_random_3d(void **s) { (void)s; random_case(3, 3000, 0.07, 0.07, 1); }
+static void test_half_cells(void **s) { (void)s; random_case(3, 3000, 0.08, 0.04, 1); }
 static void test_random_2d(void **s) { (void)s; random_case(2, 3000, 0.05, 0.06, 1); }
 static void test_random_bbox(void **s) { (void)s; random_case(3, 1500, 0.1, 0.1, 0); }
 
@@ -97,6 +135,7 @@ static void test_bad_cutoff(void **s)
     struct neighbour_list nl = { 0 };
     assert_int_equal(cells_build(&g, 3, x, 2, 0.05, NULL, NULL), 0);
     assert_int_not_equal(neighbour_build(&nl, &g, x, 0.2), 0);
+    assert_int_not_equal(neighbour_build_skin(&nl, &g, x, 0.08, 0.03), 0);
     assert_int_not_equal(cells_build(&g, 3, x, 2, 0.0, NULL, NULL), 0);
     cells_free(&g);
     neighbour_free(&nl);
@@ -138,6 +177,9 @@ int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_random_3d),
+        cmocka_unit_test(test_half_cells),
+        cmocka_unit_test(test_skin_3d),
+        cmocka_unit_test(test_skin_2d),
         cmocka_unit_test(test_random_2d),
         cmocka_unit_test(test_random_bbox),
         cmocka_unit_test(test_bad_cutoff),
