@@ -57,8 +57,6 @@ static int grow_particles(struct couple_fluid *cf, int cap)
     SIM_GROW(cf->eps, cap);
     SIM_GROW(cf->fA, 3 * cap);
     SIM_GROW(cf->gradp_p, 3 * cap);
-    SIM_GROW(cf->ppe_factor, cap);
-    SIM_GROW(cf->corr_factor, cap);
     SIM_GROW(cf->mask, cap);
     SIM_GROW(cf->id_seen, cap);
     cf->cap_p = cap;
@@ -87,18 +85,24 @@ int couple_fluid_init(struct couple_fluid *cf, const struct dict *coupling,
         P->f_ext = calloc(3 * (size_t)cap + 8, sizeof *P->f_ext);
     if (!P->inv_eps || !P->f_ext)
         return SIM_ERR_NOMEM;
+    /* Model A's factors are 1: its solver gets no hooks for them. */
+    if (cf->cs.model == COUPLING_MODEL_B) {
+        if (!P->ppe_scale)
+            P->ppe_scale = malloc((size_t)cap * sizeof *P->ppe_scale + 64);
+        if (!P->corr_scale)
+            P->corr_scale = malloc((size_t)cap * sizeof *P->corr_scale + 64);
+        if (!P->ppe_scale || !P->corr_scale)
+            return SIM_ERR_NOMEM;
+    }
     for (int i = 0; i < cap; i++) {
         P->inv_eps[i] = 1.0;
         cf->eps[i] = 1.0;
-        cf->ppe_factor[i] = cf->corr_factor[i] = 1.0;
+        if (P->ppe_scale)
+            P->ppe_scale[i] = P->corr_scale[i] = 1.0;
     }
     log_info("Coupling: r_e,s = %g m (%g dp), porosity floor %g, pair skin "
              "%g dp%s", cf->re, cf->cs.radius, cf->cs.eps_min, cf->cs.skin,
              cf->dim == 2 ? "; 2-D slab one dp deep" : "");
-    if (cf->cs.model == COUPLING_MODEL_B)
-        log_warn("Coupling model B: the MPS solver has no hook yet for the "
-                 "PPE source factor eps_i (eq. 13) and the correction factor "
-                 "1/eps_i; they are taken as 1 (exact only where eps = 1)");
     return SIM_OK;
 }
 
@@ -165,19 +169,28 @@ int couple_fluid_update(struct couple_fluid *cf, struct mps_solver *s)
                               P->x, &searched));
     TRY(coupling_porosity(&cf->pairs, cf->Vg, cf->cs.eps_min, cf->eps,
                           P->inv_eps, &cf->n_clamped));
+    /* Particles that hold phi_i dp^d of fluid (genParticles grainVolume
+     * scale) count phi_j/eps_j in every neighbour sum (eq. 7 and the
+     * operators), so that a packed bed starts at <n> = n0. */
+    if (P->phi)
+        for (int i = 0; i < P->n; i++)
+            P->inv_eps[i] *= P->phi[i];
     for (int i = 0; i < P->n; i++)
         cf->mask[i] = P->type[i] != MPS_DUMMY;
     coupling_reaction_input(cf->cs.model, cf->cs.conservative, cf->ng,
                             cf->Fbar, cf->eps_k, cf->Fin);
-    TRY(coupling_reaction(&cf->pairs, cf->mask, cf->Fin, cf->Vp, cf->fA,
-                          &cf->n_orphan));
+    TRY(coupling_reaction(&cf->pairs, cf->mask, cf->Fin, cf->Vp, P->phi,
+                          cf->fA, &cf->n_orphan));
     memset(P->f_ext, 0, 3 * (size_t)P->n * sizeof *P->f_ext);
     for (int i = 0; i < P->n; i++)
         cf->mask[i] = P->type[i] == MPS_FLUID;
     coupling_mps_accel(cf->cs.model, cf->cs.conservative, P->n, cf->eps,
                        cf->fA, cf->rho, cf->g, cf->mask, P->f_ext);
-    coupling_ppe_source_factor(cf->cs.model, P->n, cf->eps, cf->ppe_factor);
-    coupling_correction_factor(cf->cs.model, P->n, cf->eps, cf->corr_factor);
+    if (P->ppe_scale) {
+        coupling_ppe_source_factor(cf->cs.model, P->n, cf->eps, P->ppe_scale);
+        coupling_correction_factor(cf->cs.model, P->n, cf->eps,
+                                   P->corr_scale);
+    }
     cf->wall += app_wall_time() - t0;
     return SIM_OK;
 }
@@ -319,7 +332,7 @@ void couple_fluid_free(struct couple_fluid *cf)
     free(cf->xg); free(cf->vg); free(cf->rg); free(cf->Vg); free(cf->Vs);
     free(cf->Fbar); free(cf->Fin); free(cf->eps_k); free(cf->u_k);
     free(cf->gradp_k); free(cf->wet);
-    free(cf->eps); free(cf->fA); free(cf->gradp_p); free(cf->ppe_factor);
-    free(cf->corr_factor); free(cf->mask); free(cf->id_seen);
+    free(cf->eps); free(cf->fA); free(cf->gradp_p);
+    free(cf->mask); free(cf->id_seen);
     memset(cf, 0, sizeof *cf);
 }

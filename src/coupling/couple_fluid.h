@@ -32,9 +32,8 @@
  * MPS particles of volume dp^3, so that momentum balances in the slab.
  *
  * Model B's PPE source factor s_i = eps_i (13) and correction factor
- * c_i = 1/eps_i need two hooks the MPS solver does not have yet; until it
- * does, cf->ppe_factor and cf->corr_factor hold them for the solver to
- * read (see the report of issue 6) and Model B runs with s_i = c_i = 1.
+ * c_i = 1/eps_i (the 1/eps of eq. 5 on the intrinsic velocity) go into
+ * the solver's ppe_scale and corr_scale hooks, allocated for Model B only.
  */
 #ifndef MPSDEM_COUPLING_COUPLE_FLUID_H
 #define MPSDEM_COUPLING_COUPLE_FLUID_H
@@ -68,7 +67,7 @@ struct couple_fluid {
     uint8_t *wet;
     /* per MPS particle (capacity cap_p) */
     int cap_p;
-    double *eps, *fA, *gradp_p, *ppe_factor, *corr_factor;
+    double *eps, *fA, *gradp_p;
     uint8_t *mask;              /* fluid and wall: interpolation, (36)   */
     int64_t *id_seen;           /* ids at the last pair search           */
     int n_seen;

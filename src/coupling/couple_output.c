@@ -46,9 +46,11 @@ int couple_output_snapshot(struct couple_output *o,
     TRY(grow(o, P->n > 0 ? P->n : 1));
     int m = P->n < cf->pairs.np ? P->n : cf->pairs.np;
     memcpy(o->id, P->id, (size_t)P->n * sizeof *o->id);
-    for (int i = 0; i < m; i++)
+    for (int i = 0; i < m; i++) {
+        double V = P->phi ? cf->Vp * P->phi[i] : cf->Vp; /* V_i of eq. (36) */
         for (int c = 0; c < 3; c++)
-            o->F[3 * i + c] = -cf->Vp * cf->fA[3 * i + c];
+            o->F[3 * i + c] = -V * cf->fA[3 * i + c];
+    }
     memset(o->F + 3 * (size_t)m, 0, 3 * (size_t)(P->n - m) * sizeof *o->F);
     o->n = P->n;
     return SIM_OK;

@@ -5,6 +5,9 @@
  *   F_bar^d_k = (1/N_sub) sum_{s=1}^{N_sub} F^d_k(s)
  *   f_A,i     = (1/V_i) sum_k F_bar^d_k w_s(|r_ki|) / sum_j w_s(|r_kj|)  (36)
  *
+ * with V_i = phi_i V_p, phi_i the particle's fluid volume fraction (1
+ * unless genParticles gave volume fractions, grainVolume scale).
+ *
  * The DEM side evaluates drag at every sub-step with its own current
  * velocity (stable for light grains); the fluid feels the average, which
  * is the impulse the grains received over the fluid step divided by dt, so
@@ -81,8 +84,8 @@ static double grain_weight(const struct coupling_pairs *P, int k,
 }
 
 int coupling_reaction(struct coupling_pairs *P, const uint8_t *mask,
-                      const double *Fbar, double Vp, double *fA,
-                      int *n_orphan)
+                      const double *Fbar, double Vp, const double *phi,
+                      double *fA, int *n_orphan)
 {
     if (!(Vp > 0))
         return sim_error(SIM_ERR_INPUT, "reaction: particle volume %g must "
@@ -104,8 +107,9 @@ int coupling_reaction(struct coupling_pairs *P, const uint8_t *mask,
             for (int64_t e = P->pstart[i]; e < P->pstart[i + 1]; e++)
                 for (int d = 0; d < 3; d++)
                     s[d] += P->pw[e] * c[3 * P->pk[e] + d];
+        double iv = phi ? inv_v / phi[i] : inv_v;
         for (int d = 0; d < 3; d++)
-            fA[3 * (int64_t)i + d] = s[d] * inv_v;
+            fA[3 * (int64_t)i + d] = s[d] * iv;
     }
     if (n_orphan)
         *n_orphan = orphans;

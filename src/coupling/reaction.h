@@ -38,13 +38,15 @@ void coupling_drag_mean_free(struct coupling_drag_mean *m);
  *   mask   (may be NULL = all) particles that take a share, the same mask
  *          as the interpolation (fluid and wall by default, A0-13)
  *   Vp     MPS particle volume V_i = dp^3 (dp^2 in 2-D) [m^3]
+ *   phi    (may be NULL = 1) per-particle fluid volume fractions: V_i =
+ *          phi_i Vp (genParticles grainVolume scale)
  *   n_orphan (may be NULL) grains with no particle to take their force:
  *          their drag is lost to the fluid (a dry grain has none anyway)
  * Particles outside mask get fA = 0. Uses P->gwork as scratch (no
  * allocation).
  */
 int coupling_reaction(struct coupling_pairs *P, const uint8_t *mask,
-                      const double *Fbar, double Vp, double *fA,
-                      int *n_orphan);
+                      const double *Fbar, double Vp, const double *phi,
+                      double *fA, int *n_orphan);
 
 #endif

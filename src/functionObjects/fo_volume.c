@@ -1,7 +1,9 @@
 /*
  * fo_volume.c — fluid volume as a conservation check (METHODS.md E1-17):
  *
- *     N_f = number of fluid particles,   V = N_f dp^d,
+ *     N_f = number of fluid particles,   V = N_f dp^d
+ *     (V = sum of volumeFraction dp^d when the cloud has that field,
+ *     genParticles grainVolume scale),
  *     dV  = (V - V_0)/V_0,  V_0 the volume at this run's first execution
  *
  * MPS particles carry fixed volumes, so V changes only when the solver
@@ -51,10 +53,17 @@ static int execute(void *data, const struct fo_scene *s, FILE *out)
     struct mps_fo_fields f;
     TRY(mps_fo_fields_get(NULL, s, MPS_FO_TYPE, &f));
     long count = 0, n = (long)f.n;
-#pragma omp parallel for reduction(+ : count) schedule(static)
+    double sum = 0; /* fluid volume in dp^d: the volume fractions if any */
+    const struct vtu_field *vf = vtu_find(s->cloud, "volumeFraction");
+    const double *phi = vf && vf->type == VTU_FLOAT64 && vf->ncomp == 1
+                      ? vf->data : NULL;
+#pragma omp parallel for reduction(+ : count, sum) schedule(static)
     for (long i = 0; i < n; i++)
-        count += f.type[i] == 0;
-    double vol = (double)count * pow(s->spacing, s->dim);
+        if (f.type[i] == 0) {
+            count++;
+            sum += phi ? phi[i] : 1.0;
+        }
+    double vol = sum * pow(s->spacing, s->dim);
     if (!v->started) {
         v->started = 1;
         v->v0 = vol;

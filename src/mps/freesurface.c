@@ -9,6 +9,15 @@
  * A fluid particle is on the surface if (14) holds, or if (16) holds and
  * <n>_i < fs_n_max n0 (0.97). |F0| is |F| of a particle on a flat surface of
  * the initial lattice (A0-06: the seed's "internal particle" would be 0).
+ * Inside a porous region (eps_i < 1, coupled runs) only (14) applies, with
+ * its own threshold betaPorous (default 0.8, the paper's beta): there the
+ * neighbour weights 1/eps_j (or phi_j/eps_j) change as the grains move,
+ * <n>_i wanders a few per cent about n0 and the neighbourhoods lose their
+ * symmetry; (16), or a beta close to 1 as the tutorials use for still
+ * water, then flags interior particles of a bed (a third of them in a
+ * settling bed of 2.7 mm beads at dp = 5 mm), each a Dirichlet p = 0 that
+ * drains the pressure of the whole column. A real surface there still has
+ * <n> well below n0.
  * Wall particles are never free surface; a wall particle with no fluid
  * neighbour within the number-density radius is "dry" and gets p = 0 too,
  * so that the PPE does not carry the whole dry tank wall (whose rows would
@@ -35,7 +44,10 @@ void mps_free_surface(struct mps_solver *s)
         uint8_t flag = MPS_INNER;
         double nd = P->nd[i];
         if (P->type[i] == MPS_FLUID) {
-            if (nd < S->beta) {
+            if (ie && ie[i] > 1.0) {
+                if (nd < S->beta_porous)
+                    flag = MPS_SURFACE;
+            } else if (nd < S->beta) {
                 flag = MPS_SURFACE;
             } else if (nd < S->fs_n_max) {
                 double F[3] = { 0, 0, 0 };

@@ -17,10 +17,11 @@
  * METHODS.md A.9). Particles are renumbered in cell order every
  * `renumberInterval` steps; `id` follows each particle.
  *
- * Coupling hooks (later issue): `inv_eps` (1/eps per particle) and
- * `f_ext` (force per unit mass added in the prediction, e.g. -f_A/rho) are
- * NULL for a single-phase case and are then neither read nor allocated.
- * Every operator already takes inv_eps.
+ * Coupling hooks: `inv_eps` (1/eps per particle), `f_ext` (force per unit
+ * mass added in the prediction, e.g. -f_A/rho), `ppe_scale` and
+ * `corr_scale` (per-particle factors of the PPE source and of the pressure
+ * correction) are NULL for a single-phase case and are then neither read
+ * nor allocated. Every operator takes inv_eps.
  */
 #ifndef MPSDEM_MPS_MPS_H
 #define MPSDEM_MPS_MPS_H
@@ -54,6 +55,14 @@ struct mps_particles {
     uint8_t *fs;      /* MPS_INNER | MPS_SURFACE | MPS_DRY_WALL          */
     double *inv_eps;  /* NULL (single phase) or n values of 1/eps        */
     double *f_ext;    /* NULL or 3n extra acceleration [m/s^2]           */
+    double *ppe_scale;  /* NULL or n factors of the PPE source (Model B:
+                           eps_i, eq. 13)                                */
+    double *corr_scale; /* NULL or n factors of the pressure correction
+                           dt/rho grad P (Model B: 1/eps_i, eq. 5)       */
+    double *phi;      /* NULL or n fluid volume fractions: particle i
+                         holds phi_i dp^d of fluid (genParticles
+                         grainVolume scale); the coupling then weighs
+                         neighbours by phi_j/eps_j in inv_eps            */
 };
 
 struct mps_settings {
@@ -67,6 +76,7 @@ struct mps_settings {
     int predictor;                  /* PPE at r* = r + dt u* (Koshizuka) */
     int clip_negative;              /* p < 0 set to 0 after the PPE     */
     double beta, alpha, fs_n_max;   /* eqs. 14, 16 and A0-07 (0.97)     */
+    double beta_porous;             /* eq. 14 where eps < 1 (0.8)       */
     const struct mps_stabiliser_ops *collision; /* "none" by default    */
     double collision_ratio, collision_restitution;
     const struct mps_stabiliser_ops *shifting;  /* "none" by default    */

@@ -73,6 +73,9 @@ static int read_free_surface(const struct dict *d, struct mps_settings *S)
     TRY(dict_get_scalar_or(fs, "vectorDensityLimit", S->fs_n_max,
                            &S->fs_n_max));
     TRY(positive(fs, "vectorDensityLimit", S->fs_n_max, 0, 2));
+    TRY(dict_get_scalar_or(fs, "betaPorous", S->beta_porous,
+                           &S->beta_porous));
+    TRY(positive(fs, "betaPorous", S->beta_porous, 0, 1));
     return SIM_OK;
 }
 

@@ -42,6 +42,7 @@ void mps_particles_free(struct mps_particles *P)
     free(P->x); free(P->u); free(P->p); free(P->normal);
     free(P->type); free(P->patch); free(P->id); free(P->partner);
     free(P->nd); free(P->fs); free(P->inv_eps); free(P->f_ext);
+    free(P->ppe_scale); free(P->corr_scale); free(P->phi);
     memset(P, 0, sizeof *P);
 }
 
@@ -64,6 +65,12 @@ void mps_particles_permute(struct mps_solver *s, const int32_t *perm, int n)
         cells_permute(P->inv_eps, sizeof *P->inv_eps, perm, n, scr);
     if (P->f_ext)
         cells_permute(P->f_ext, 3 * sizeof *P->f_ext, perm, n, scr);
+    if (P->ppe_scale)
+        cells_permute(P->ppe_scale, sizeof *P->ppe_scale, perm, n, scr);
+    if (P->corr_scale)
+        cells_permute(P->corr_scale, sizeof *P->corr_scale, perm, n, scr);
+    if (P->phi)
+        cells_permute(P->phi, sizeof *P->phi, perm, n, scr);
     /* The PPE warm start lives in p; partner indices must follow. */
     for (int i = 0; i < nold; i++)
         s->inv[i] = -1;

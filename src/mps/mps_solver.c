@@ -26,6 +26,7 @@ void mps_settings_default(struct mps_settings *S)
     S->beta = 0.8;
     S->alpha = 0.9;
     S->fs_n_max = 0.97;
+    S->beta_porous = 0.8;
     S->collision = &mps_stabiliser_none;
     S->shifting = &mps_stabiliser_none;
     S->collision_ratio = 0.5;

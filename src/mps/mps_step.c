@@ -84,13 +84,16 @@ static void correct(struct mps_solver *s, double dt)
     else
         mps_gradient(&s->nl, s->w_g, P->dim, s->Lg.n0, P->x, P->p,
                      P->inv_eps, s->rows_fluid, s->grad);
-    const double c = dt / s->S.rho;
+    const double c0 = dt / s->S.rho;
+    const double *cs = P->corr_scale; /* Model B: 1/eps_i (eq. 5) */
 #pragma omp parallel for schedule(static)
-    for (int i = 0; i < P->n; i++)
+    for (int i = 0; i < P->n; i++) {
+        double c = cs ? c0 * cs[i] : c0;
         for (int q = 0; q < 3; q++)
             P->u[3 * i + q] = P->type[i] == MPS_FLUID
                             ? s->ustar[3 * i + q] - c * s->grad[3 * i + q]
                             : 0.0;
+    }
 }
 
 static void move(struct mps_solver *s, double dt)

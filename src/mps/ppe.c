@@ -121,6 +121,8 @@ static void source(struct mps_solver *s, double dt)
         double dn = P->nd[i] - 1.0;
         double rhs = (1 - g) * rho / dt * s->div[i]
                    - g * rho / (dt * dt) * dn;
+        if (P->ppe_scale) /* Model B: eps_i (eq. 13) */
+            rhs *= P->ppe_scale[i];
         s->b[r] = -rhs;
         s->sol[r] = P->p[i];
     }

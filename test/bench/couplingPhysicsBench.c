@@ -99,7 +99,7 @@ static void run(double dp, int R)
         }
         td = best(td, omp_get_wtime() - t);
         t = omp_get_wtime();
-        coupling_reaction(&P, NULL, F, dp * dp * dp, fA, NULL);
+        coupling_reaction(&P, NULL, F, dp * dp * dp, NULL, fA, NULL);
         tr = best(tr, omp_get_wtime() - t);
     }
     double total = 2 * tb + 2 * tp + ti + tr + td;
@@ -158,7 +158,7 @@ static void model_b_balance(double ratio)
     }
     for (int cons = 0; cons <= 1; cons++) {
         coupling_reaction_input(COUPLING_MODEL_B, cons, NG, F, ek, Fin);
-        coupling_reaction(&P, NULL, Fin, Vp, fA, NULL);
+        coupling_reaction(&P, NULL, Fin, Vp, NULL, fA, NULL);
         coupling_mps_accel(COUPLING_MODEL_B, cons, np, eps, fA, 1000, g0,
                            NULL, a);
         got[cons] = 0;

@@ -2,12 +2,13 @@
 # mpsDemDenseBed2D.sh — a packed bed of touching grains (the paper's
 # simple-cubic packing, porosity 0.48; METHODS.md A.12.1) in still water,
 # 2-D, dp = 5 mm, 45 beads of d = 5 mm, Model B, 0.3 s in tandem.
-#   genParticles with `grainVolume exclude;` leaves out as many fluid
-#   particles as the grains displace (to within one: error diffusion), and
-#   the solid volume it reports equals the beads' volume within 10 %
-#   (kernel tails reach into the walls);
+#   genParticles with `grainVolume scale;` gives the fluid particles the
+#   volume fractions phi = eps (field volumeFraction); the solid volume it
+#   reports equals the beads' volume within 10 % (kernel tails reach into
+#   the walls) and the fluid volume is (200 - that) dp^2;
 #   the coupled run starts at rest: no particle escapes, the fluid volume
-#   is conserved, the bed falls the one diameter it starts above the
+#   sum phi dp^2 is conserved exactly and written again at every output
+#   time (restarts keep it), the bed falls the one diameter it starts above the
 #   floor and settles: the peak grain kinetic energy stays below the work
 #   of the submerged weight over that fall (2.17e-4 J), the energy at
 #   0.3 s is <= 1 % of the peak, and |total drag| at the end is <= 2 % of
@@ -31,7 +32,7 @@ regions
 (
     tank   { type tankWall; shape box; min (0 0 0); max (0.05 0.15 0); open (ymax); }
     water  { type fluid; shape box; min (0 0 0); max (0.05 0.1 0);
-             hydrostaticPressure yes; grainVolume exclude; }
+             hydrostaticPressure yes; grainVolume scale; }
     beads  { type grains; shape box; min (0.0025 0.005 0); max (0.0475 0.0305 0);
              diameter 0.005; lattice cubic; spacing 0.005; }
 );
@@ -51,13 +52,13 @@ sed -i "s/^model .*/model B;/; s/^timeout .*/timeout 30;/" "$c/system/couplingDi
 echo "channel mpsdem-densebed2d-$$;" >> "$c/system/couplingDict"
 (cd "$c" && "$ROOT/bin/genParticles" > log.genParticles 2>&1) \
     || { fail denseBed2D_genParticles "$(fatal_of "$c")"; exit 1; }
-# "Region water: grainVolume exclude: N fluid particles left out ... (grain volume S dp^2 ..."
-read -r nrem solid <<< "$(sed -n 's/.*exclude: \([0-9]*\) fluid.*volume \([0-9.]*\) dp.*/\1 \2/p' "$c/log.genParticles")"
+# "Region water: grainVolume scale: ... take out S dp^2 where ..."
+solid=$(sed -n 's/.*take out \([0-9.]*\) dp.*/\1/p' "$c/log.genParticles")
 # 45 spheres of d = dp spread over the depth dp: 45 pi/6 dp^2
-awk -v n="${nrem:-x}" -v s="${solid:-x}" 'BEGIN { V = 45 * 3.14159265358979 / 6
-        exit !(n - s <= 1 && s - n <= 1 && s > 0.9 * V && s <= V) }' \
-    && pass "denseBed2D_exclude removed $nrem sites for a solid volume of $solid dp^2" \
-    || fail denseBed2D_exclude "removed '$nrem' for solid volume '$solid' dp^2 (45 pi/6 = 23.56)"
+awk -v s="${solid:-x}" 'BEGIN { V = 45 * 3.14159265358979 / 6
+        exit !(s > 0.9 * V && s <= V) }' \
+    && pass "denseBed2D_scale solid volume $solid dp^2 (45 pi/6 = 23.56)" \
+    || fail denseBed2D_scale "solid volume '$solid' dp^2 (45 pi/6 = 23.56)"
 run_tandem "$c"; ok=$?
 esc=$(grep -o 'escaped [0-9]*' "$c/log.mpsFluid" | tail -1 | awk '{ print $2 }')
 if [ $ok -ne 0 ] || [ "$esc" != 0 ]; then
@@ -72,15 +73,28 @@ awk -v e="$ke" -v r="$kr" 'BEGIN { W = 45 * 4 / 3 * 3.14159265358979 * 0.0025^3 
         exit !(e <= W * 0.005 && r <= 0.01) }' \
     && pass "denseBed2D_settles peak E_k $ke J (<= W' d), E(0.3 s)/E_peak = $kr" \
     || fail denseBed2D_settles "peak E_k $ke J (<= 2.17e-4), E(0.3 s)/E_peak = $kr (<= 1 %)"
-vol=$(awk '!/^#/ { if (!v0) v0 = $3; d = $3 / v0 - 1; if (d < 0) d = -d; if (d > m) m = d } END { print m + 0 }' \
-      "$c/postProcessing/volume/0/volume.dat")
-awk -v d="$vol" 'BEGIN { exit !(d < 1e-9) }' \
-    && pass "denseBed2D_volume fluid volume constant ($vol)" \
-    || fail denseBed2D_volume "fluid volume changed by $vol"
+read -r v0 vmax <<< "$(awk '!/^#/ { if (!v0) v0 = $3; d = $3 / v0 - 1; if (d < 0) d = -d; if (d > m) m = d } END { print v0, m + 0 }' \
+      "$c/postProcessing/volume/0/volume.dat")"
+awk -v v="$v0" -v s="$solid" -v d="$vmax" 'BEGIN { e = v / 0.005^2 - (200 - s)
+        exit !(d == 0 && e < 0.05 && e > -0.05) }' \
+    && pass "denseBed2D_volume fluid volume $v0 m^2 = (200 - $solid) dp^2, constant" \
+    || fail denseBed2D_volume "fluid volume $v0 m^2 (200 - $solid dp^2), largest change $vmax"
+"$ROOT/bin/vtuInfo" -case "$c" 0.3/fluid.vtu 2>/dev/null | grep -q "field volumeFraction" \
+    && pass "denseBed2D_written volumeFraction in 0.3/fluid.vtu" \
+    || fail denseBed2D_written "no volumeFraction in 0.3/fluid.vtu"
 dr=$(awk '!/^#/ { l = $0 } END { split(l, a)
         W = 45 * 4 / 3 * 3.14159265358979 * 0.0025^3 * 1500 * 9.81
         print sqrt(a[2]^2 + a[3]^2) / W }' "$c/postProcessing/forces/0/couplingForces.dat")
 awk -v d="$dr" 'BEGIN { exit !(d <= 0.02) }' \
     && pass "denseBed2D_drag |F_d|/W' = $dr at 0.3 s" \
     || fail denseBed2D_drag "|F_d|/W' = $dr (<= 2 %)"
+# the same particles in a run without coupling: refused, with the reason
+sed -i 's/^coupled .*/coupled no;/' "$c/system/couplingDict"
+if (cd "$c" && "$MPSFLUID" > log.uncoupled 2>&1); then
+    fail denseBed2D_uncoupled "mpsFluid ran a volumeFraction cloud without coupling"
+else
+    grep -q "volumeFraction.*needs a coupled run" "$c/log.uncoupled" \
+        && pass "denseBed2D_uncoupled refused: $(grep -o "field 'volumeFraction'.*" "$c/log.uncoupled" | head -1 | cut -c1-60)" \
+        || fail denseBed2D_uncoupled "no clear message: $(fatal_of "$c")"
+fi
 exit $((fails > 0))

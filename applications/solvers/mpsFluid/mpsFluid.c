@@ -55,7 +55,7 @@ struct fluid {
     struct fo_list *fos;
     struct fo_scene scene;
     struct vtu_cloud cloud;
-    struct vtu_field fields[10];
+    struct vtu_field fields[11];
     struct dict *coupling;          /* coupled runs only                 */
     int coupled;
     struct couple_fluid cf;
@@ -94,6 +94,32 @@ static int read_patches(struct fluid *f)
     return SIM_OK;
 }
 
+/* Optional field volumeFraction (genParticles grainVolume scale): the
+ * fluid volume of each particle in units of dp^d, in (0, 1]. Only a
+ * coupled run knows the porosity it compensates. */
+static int copy_volume_fraction(const struct vtu_cloud *c, const char *path,
+                                struct mps_particles *P)
+{
+    const struct vtu_field *vf = vtu_find(c, "volumeFraction");
+    if (!vf)
+        return SIM_OK;
+    if (vf->type != VTU_FLOAT64 || vf->ncomp != 1)
+        return sim_error(SIM_ERR_INPUT, "%s: field 'volumeFraction' must be "
+                         "Float64 with one component", path);
+    const double *v = vf->data;
+    P->phi = sim_malloc(((size_t)c->n + 1) * sizeof *P->phi);
+    if (!P->phi)
+        return SIM_ERR_NOMEM;
+    for (size_t i = 0; i < c->n; i++) {
+        if (!(v[i] > 0 && v[i] <= 1))
+            return sim_error(SIM_ERR_INPUT, "%s: particle %zu has "
+                             "volumeFraction %g (must lie in (0, 1])", path,
+                             i, v[i]);
+        P->phi[i] = v[i];
+    }
+    return SIM_OK;
+}
+
 static int copy_cloud(struct fluid *f, const struct vtu_cloud *c,
                       const char *path, struct mps_particles *P)
 {
@@ -118,6 +144,7 @@ static int copy_cloud(struct fluid *f, const struct vtu_cloud *c,
     memcpy(P->patch, pa->data, sizeof *P->patch * n);
     if (id)
         memcpy(P->id, id->data, sizeof *P->id * n);
+    TRY(copy_volume_fraction(c, path, P));
     for (int i = 0; i < n; i++) {
         if (P->type[i] < 0 || P->type[i] > 2)
             return sim_error(SIM_ERR_INPUT, "%s: particle %d has type %d "
@@ -193,6 +220,11 @@ static int create_fluid(struct fluid *f)
              f->dim, f->dp);
     TRY(mps_solver_init(&f->s, &P, &S, f->dp, ls));
     TRY(create_coupling(f));
+    if (f->s.P.phi && !f->coupled)
+        return sim_error(SIM_ERR_INPUT, "%s: field 'volumeFraction' (fluid "
+                         "displaced by grains: genParticles grainVolume "
+                         "scale) needs a coupled run (system/couplingDict: "
+                         "coupled yes)", path);
     return mps_check_setup(&f->s, f->rt.delta_t, f->rt.adjust,
                            f->rt.adjust ? f->rt.max_co : 0.2);
 }
@@ -213,14 +245,18 @@ static int refresh_scene(struct fluid *f)
     memcpy(f->fields, fl, sizeof fl);
     int nf = 8;
     if (f->coupled) {
+        /* inv_eps holds phi_i/eps_i with volume fractions */
         for (int i = 0; i < P->n; i++)
-            f->cf.eps[i] = 1.0 / P->inv_eps[i];
+            f->cf.eps[i] = (P->phi ? P->phi[i] : 1.0) / P->inv_eps[i];
         f->fields[nf++] = (struct vtu_field){ "porosity", VTU_FLOAT64, 1,
                                               f->cf.eps };
         double *react;
         TRY(couple_output_reaction(&f->out, P, &react));
         f->fields[nf++] = (struct vtu_field){ "reaction", VTU_FLOAT64, 3,
                                               react };
+        if (P->phi) /* written so that a restart keeps it */
+            f->fields[nf++] = (struct vtu_field){ "volumeFraction",
+                                                  VTU_FLOAT64, 1, P->phi };
     }
     f->cloud = (struct vtu_cloud){ .n = (size_t)P->n, .points = P->x,
                                    .nfields = nf, .fields = f->fields,

@@ -112,9 +112,13 @@ static int read_physics(const struct app *a, struct gen_case *c)
     return SIM_OK;
 }
 
-static void print_summary(const struct gen_case *c)
+static void print_summary(const struct gen_case *c, const struct mps_cloud *m)
 {
     size_t tot[4] = { 0, 0, 0, 0 };
+    double fluid = 0; /* fluid volume in dp^d (volume fractions if any) */
+    for (size_t k = 0; k < m->n; k++)
+        if (m->type[k] == TYPE_FLUID)
+            fluid += m->phi ? m->phi[k] : 1.0;
 
     log_info("\nCreating particles: dimension %d, dp = %g m, %d wall "
              "layer(s) (1 wall + %d dummy), lattice origin (%g %g %g)",
@@ -134,7 +138,7 @@ static void print_summary(const struct gen_case *c)
     log_info("    %-5s %-16s %-9s %-9s %10zu %10zu %10zu %10zu\n", "",
              "total", "", "", tot[0], tot[1], tot[2], tot[3]);
     log_info("MPS particles: %zu (fluid volume %g m^%d); grains: %zu",
-             tot[0] + tot[1] + tot[2], (double)tot[0] * pow(c->dp, c->dim),
+             tot[0] + tot[1] + tot[2], fluid * pow(c->dp, c->dim),
              c->dim, tot[3]);
 }
 
@@ -193,9 +197,14 @@ static int write_fluid(const struct gen_case *c, const struct mps_cloud *m,
         { "velocity", VTU_FLOAT64, 3, m->u },
         { "pressure", VTU_FLOAT64, 1, m->p },
         { "normal", VTU_FLOAT64, 3, m->normal },
+        { "volumeFraction", VTU_FLOAT64, 1, m->phi },
         { "id", VTU_INT64, 1, NULL },
     };
-    return write_with_ids(c, m->n, m->x, f, 6, path);
+    if (!m->phi) { /* no grainVolume scale: no field */
+        f[5] = f[6];
+        return write_with_ids(c, m->n, m->x, f, 6, path);
+    }
+    return write_with_ids(c, m->n, m->x, f, 7, path);
 }
 
 static int write_dem(const struct gen_case *c, const struct dem_cloud *m,
@@ -296,10 +305,10 @@ static int run(const struct app *a)
     TRY_GOTO(rc, gen_check_memory(&c), out);
     TRY_GOTO(rc, gen_mps(&c, &m), out);
     TRY_GOTO(rc, gen_dem(&c, &g), out);
-    TRY_GOTO(rc, gen_exclude_grains(a, &c, &m, &g), out);
+    TRY_GOTO(rc, gen_grain_volume(a, &c, &m, &g), out);
     TRY_GOTO(rc, gen_hydrostatic(&c, &m), out);
     dict_warn_unused(d);
-    print_summary(&c);
+    print_summary(&c, &m);
     TRY_GOTO(rc, write_all(a, &c, &m, &g), out);
 out:
     mps_cloud_free(&m);

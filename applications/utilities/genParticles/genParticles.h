@@ -66,6 +66,8 @@ struct mps_cloud {
     size_t n;
     double *x, *u, *p, *normal;
     int32_t *type, *patch, *region;
+    double *phi;            /* NULL, or the fluid volume fraction of each
+                               particle (grainVolume scale)              */
 };
 
 struct dem_cloud {
@@ -86,11 +88,12 @@ int gen_check_memory(const struct gen_case *c);
 int gen_mps(struct gen_case *c, struct mps_cloud *m);
 int gen_dem(struct gen_case *c, struct dem_cloud *m);
 int gen_hydrostatic(struct gen_case *c, struct mps_cloud *m);
-/* grainVolume.c: fluid regions with `grainVolume exclude;` keep each site
- * with the probability of its porosity (reads system/couplingDict). */
+/* grainVolume.c: fluid regions with `grainVolume scale;` give each fluid
+ * particle the volume fraction phi = porosity at its site (m->phi; reads
+ * system/couplingDict). */
 struct app;
-int gen_exclude_grains(const struct app *a, struct gen_case *c,
-                       struct mps_cloud *m, const struct dem_cloud *g);
+int gen_grain_volume(const struct app *a, struct gen_case *c,
+                     struct mps_cloud *m, const struct dem_cloud *g);
 void mps_cloud_free(struct mps_cloud *m);
 void dem_cloud_free(struct dem_cloud *m);
 

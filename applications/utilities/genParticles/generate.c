@@ -395,6 +395,7 @@ void mps_cloud_free(struct mps_cloud *m)
     free(m->type);
     free(m->patch);
     free(m->region);
+    free(m->phi);
     memset(m, 0, sizeof *m);
 }
 

@@ -142,6 +142,14 @@ static int read_region(const struct gen_case *c, struct region *r)
     TRY(dict_get_vector_or(d, "velocity", 3, zero3, r->velocity));
     if (c->dim == 2)
         r->velocity[2] = 0;
+    /* Neither solver moves walls: refuse what they would ignore. */
+    if ((r->type == REGION_TANK_WALL || r->type == REGION_WALL)
+        && (r->velocity[0] != 0 || r->velocity[1] != 0
+            || r->velocity[2] != 0))
+        return dict_error(d, "velocity", SIM_ERR_DICT, "region '%s': moving "
+                          "walls are not supported (mpsFluid and demSolid "
+                          "keep every wall fixed); remove 'velocity' or set "
+                          "it to (0 0 0)", r->name);
     switch (r->type) {
     case REGION_TANK_WALL:
         TRY(read_open(c, r));

@@ -219,6 +219,20 @@ static void momentum_through_glue(const char *model)
     st.drag = zero;
     assert_int_equal(couple_fluid_set_grains(&cf, &st, 0.0), 0);
     assert_int_equal(couple_fluid_update(&cf, &s), 0);
+    /* Model B's factors of eqs. (13) and (5) reach the solver's hooks;
+     * Model A gets none (its factors are 1). */
+    if (cf.cs.model == COUPLING_MODEL_B) {
+        int below = 0;
+        for (int i = 0; i < s.P.n; i++) {
+            assert_true(s.P.ppe_scale[i] == cf.eps[i]);
+            assert_true(s.P.corr_scale[i] == 1.0 / cf.eps[i]);
+            below += cf.eps[i] < 1.0;
+        }
+        assert_true(below > 0);
+    } else {
+        assert_null(s.P.ppe_scale);
+        assert_null(s.P.corr_scale);
+    }
     assert_int_equal(couple_fluid_grain_fields(&cf, &s), 0);
     assert_int_equal(cf.wet[3], 0);
     for (int k = 0; k < 3; k++) {

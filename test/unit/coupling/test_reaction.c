@@ -61,7 +61,7 @@ static double momentum_error(struct coupling_pairs *P, const uint8_t *mask,
                              const double *F, double Vp, double *fA,
                              int *orphans)
 {
-    assert_int_equal(coupling_reaction(P, mask, F, Vp, fA, orphans), 0);
+    assert_int_equal(coupling_reaction(P, mask, F, Vp, NULL, fA, orphans), 0);
     double sf[3] = { 0, 0, 0 }, sk[3] = { 0, 0, 0 }, scale = 0;
     for (int i = 0; i < P->np; i++)
         for (int c = 0; c < 3; c++) {
@@ -125,7 +125,7 @@ static void test_momentum_identity(void **state)
     print_message("E1-13 worst relative momentum error %.2e (6 random "
                   "configurations, 300 grains, 8000 particles)\n", worst);
     assert_int_equal(coupling_reaction(&(struct coupling_pairs){ 0 }, NULL,
-                                       F, 0.0, fA, NULL), SIM_ERR_INPUT);
+                                       F, 0.0, NULL, fA, NULL), SIM_ERR_INPUT);
     sim_error_clear();
 }
 
@@ -149,7 +149,7 @@ static void test_against_direct(void **state)
         xp[i] = 0.035 * urand() - 0.0025;
     struct coupling_pairs P = { 0 };
     assert_int_equal(coupling_pairs_build(&P, 3, re, NG, xg, NP, xp), 0);
-    assert_int_equal(coupling_reaction(&P, NULL, F, Vp, fA, NULL), 0);
+    assert_int_equal(coupling_reaction(&P, NULL, F, Vp, NULL, fA, NULL), 0);
     assert_int_equal(coupling_porosity(&P, Vg, 1e-6, eps, NULL, NULL), 0);
     for (int k = 0; k < NG; k++) {
         W[k] = 0;
@@ -234,7 +234,7 @@ static void test_mss_loop(void **state)
         assert_int_equal(coupling_pairs_build(&P, 3, 4.1 * dp, NG, xg, NP,
                                               xp), 0);
         int orphans = -1;
-        assert_int_equal(coupling_reaction(&P, NULL, Fbar, Vp, fA, &orphans),
+        assert_int_equal(coupling_reaction(&P, NULL, Fbar, Vp, NULL, fA, &orphans),
                          0);
         assert_int_equal(orphans, 0);
         double pf[3] = { 0, 0, 0 };
@@ -375,7 +375,7 @@ static void test_model_b_momentum(void **state)
             target[c] -= F[3 * k + c] / ek[k];   /* what the fluid owes */
     for (int cons = 0; cons <= 1; cons++) {
         coupling_reaction_input(COUPLING_MODEL_B, cons, NG, F, ek, Fin);
-        assert_int_equal(coupling_reaction(&P, NULL, Fin, Vp, fA, NULL), 0);
+        assert_int_equal(coupling_reaction(&P, NULL, Fin, Vp, NULL, fA, NULL), 0);
         coupling_mps_accel(COUPLING_MODEL_B, cons, NP, eps, fA, 1000, g0,
                            NULL, a);
         double got[3] = { 0, 0, 0 }, err = 0;

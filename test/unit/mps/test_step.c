@@ -1,7 +1,7 @@
 /* test_step.c — the MPS step on a small 2-D still-water tank built in
  * code: hydrostatic pressure after a few steps, free-surface flags on the
- * top layer only (E1-07), PCG against the CHOLMOD oracle, escaped particles
- * counted, NaN named, bad radii refused. */
+ * top layer only (E1-07), PCG against the CHOLMOD oracle, the Model B
+ * scale hooks, escaped particles counted, NaN named, bad radii refused. */
 #include <setjmp.h>
 #include <stdarg.h>
 #include <stddef.h>
@@ -207,6 +207,45 @@ static void test_pcg_vs_cholmod(void **st)
     mps_solver_free(&b);
 }
 
+/* The coupling hooks ppe_scale and corr_scale (Model B: eps and 1/eps) with
+ * a uniform factor c: the PPE is linear, so p scales by c and the
+ * correction (dt/rho)(1/c) grad(c p) leaves the velocities unchanged. */
+static void test_scale_hooks(void **st)
+{
+    (void)st;
+    struct mps_solver a, b;
+    log_set_quiet(1);
+    make_solver(&a, "cholmod", "none");
+    make_solver(&b, "cholmod", "none");
+    b.P.ppe_scale = malloc((size_t)b.P.cap * sizeof *b.P.ppe_scale);
+    b.P.corr_scale = malloc((size_t)b.P.cap * sizeof *b.P.corr_scale);
+    assert_non_null(b.P.ppe_scale);
+    assert_non_null(b.P.corr_scale);
+    for (int i = 0; i < b.P.cap; i++) {
+        b.P.ppe_scale[i] = 0.5;
+        b.P.corr_scale[i] = 2.0;
+    }
+    for (int k = 0; k < 3; k++) {
+        assert_int_equal(mps_step(&a, 5e-4), 0);
+        assert_int_equal(mps_step(&b, 5e-4), 0);
+    }
+    double pmax = 0, dp = 0, umax = 0, du = 0;
+    for (int i = 0; i < a.P.n; i++) {
+        assert_int_equal(a.P.id[i], b.P.id[i]);
+        pmax = fmax(pmax, fabs(a.P.p[i]));
+        dp = fmax(dp, fabs(0.5 * a.P.p[i] - b.P.p[i]));
+        for (int q = 0; q < 2; q++) {
+            umax = fmax(umax, fabs(a.P.u[3 * i + q]));
+            du = fmax(du, fabs(a.P.u[3 * i + q] - b.P.u[3 * i + q]));
+        }
+    }
+    assert_true(pmax > 500 && umax > 0);
+    assert_true(dp < 1e-9 * pmax);
+    assert_true(du < 1e-9 * umax);
+    mps_solver_free(&a);
+    mps_solver_free(&b);
+}
+
 /* A fluid particle thrown far out of the tank is removed and counted. */
 static void test_escape(void **st)
 {
@@ -273,6 +312,7 @@ int main(void)
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_hydrostatic),
         cmocka_unit_test(test_pcg_vs_cholmod),
+        cmocka_unit_test(test_scale_hooks),
         cmocka_unit_test(test_escape),
         cmocka_unit_test(test_nan),
         cmocka_unit_test(test_checks),
