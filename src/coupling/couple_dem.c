@@ -68,9 +68,11 @@ int couple_enabled(const struct dict *coupling, int *on)
 int couple_dem_init(struct couple_dem *cd, const struct dict *coupling,
                     const struct dict *transport, const double g[3])
 {
+    static const char *const schemes[] = { "sequential", "concurrent", NULL };
     double nu;
     memset(cd, 0, sizeof *cd);
     TRY(coupling_settings_read(coupling, &cd->cs));
+    TRY(dict_get_word_or(coupling, "scheme", schemes, 0, &cd->concurrent));
     TRY(dict_get_scalar_dim(transport, "rho", DIM_RHO, &cd->fl.rho));
     if (!(cd->fl.rho > 0) || !(cd->fl.rho < 1e6))
         return dict_error(transport, "rho", SIM_ERR_DICT, "fluid density "

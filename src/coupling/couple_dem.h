@@ -50,6 +50,7 @@ struct couple_dem {
     double fluid_time;          /* time of the last fluid state          */
     long exchanges;
     double wait;                /* seconds waiting for the fluid side    */
+    int concurrent;             /* scheme concurrent: no send at endTime */
 };
 
 /* Whether a case is coupled: system/couplingDict present (coupling may be
@@ -81,7 +82,10 @@ void couple_dem_state(const struct couple_dem *cd, const struct dem *d,
 int couple_dem_open(struct couple_dem *cd, const struct dict *coupling,
                     const char *case_dir, const char *program, int dim);
 /* Send the state at time t (after couple_dem_after, or the initial state
- * with zero drag when no advance happened yet). */
+ * with zero drag when no advance happened yet). With `scheme concurrent`
+ * the state at endTime is not sent: the fluid takes the DEM state at t^m
+ * before its last step, nobody reads that one, and the fluid may have
+ * closed the channel already (a send to a closed peer is an error). */
 int couple_dem_send(struct couple_dem *cd, struct dem *d, long step,
                     double t);
 /* Receive the fluid state; its time must be d->t. */

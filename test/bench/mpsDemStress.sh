@@ -335,7 +335,7 @@ section_c()
             local wall=$((SECONDS - t0)) s=no h="? ? ? ?" dv="?" xw="?" xs="?" dxw="?" dxs="?"
             if [ "$r" = ok ]; then
                 h=$(health "$c" 0.2)
-                dv=$(awk '!/^#/ { v = $4 } END { print v }' "$(pp "$c" volume volume)")
+                dv=$(awk '!/^#/ { v = $4 } END { printf "%.2g", v }' "$(pp "$c" volume volume)")
                 xw=$(awk '!/^#/ { v = $2 } END { printf "%.4f", v }' "$(pp "$c" fluidFront front)")
                 xs=$(awk '!/^#/ { v = $2 } END { printf "%.4f", v }' "$(pp "$c" sedimentFront front)")
                 [ -n "$xw0" ] || { xw0=$xw; xs0=$xs; }

@@ -231,7 +231,8 @@ static int step(struct solid *s)
     TRY(s->sol.integrator->advance(s->integ, d, target_time(s)));
     if (s->coupled) {
         TRY(couple_dem_after(&s->cd, d));
-        TRY(couple_dem_send(&s->cd, d, s->rt.step, d->t));
+        if (!s->cd.concurrent || time_running(&s->rt))   /* couple_dem.h */
+            TRY(couple_dem_send(&s->cd, d, s->rt.step, d->t));
     }
     long outside = dem_check_domain(d);
     if (outside < 0)

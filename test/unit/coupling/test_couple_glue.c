@@ -494,7 +494,10 @@ static int dem_side(void *arg)
             break;
         if ((rc = couple_dem_after(&cd, &d)))
             break;
-        rc = couple_dem_send(&cd, &d, m + 1, d.t);
+        /* as demSolid: concurrent sends nothing at the end (couple_dem.h;
+         * the fluid may have closed the channel already) */
+        if (!cd.concurrent || m + 1 < CH_STEPS)
+            rc = couple_dem_send(&cd, &d, m + 1, d.t);
     }
     couple_dem_close(&cd, rc);
     return rc;
