@@ -10,8 +10,10 @@
 # log.mpsFluid: the MPS step's own timers (time per particle-step x
 # particles), the time in the coupling glue G (pairs, porosity,
 # interpolation, reaction) and the time spent waiting for demSolid D (its
-# sub-steps, sequential scheme) over N steps: DEM + coupling = (G+D)/N. The first steps of this set-up are the
-# start-up of the bed (A0-16), not the paper's mid-run steps.
+# sub-steps, sequential scheme) over N steps: DEM + coupling = (G+D)/N.
+# The bed is the paper's: 7425 touching beads (the tutorial's fluid
+# particles hold eps dp^3 of water there, grainVolume scale). The first
+# steps are the release of the column, not the paper's mid-run steps.
 # MPSFLUID / DEMSOLID override the programs (default bin/).
 ROOT="$(cd "$(dirname "$0")/../.." && pwd)"
 MPSFLUID=${MPSFLUID:-$ROOT/bin/mpsFluid}
@@ -29,10 +31,6 @@ for dp in "${dps[@]}"; do
     c="$TMP/dp$dp"
     cp -r "$ROOT/tutorials/mpsDem/twoPhaseDamBreak" "$c"
     sed -i "s/^dp .*/dp           $dp;/" "$c/system/particleDict"
-    # beads 1.3 d apart (porosity 0.78, 3400 grains): the paper's touching
-    # pack (0.48) with the fluid lattice in its pores (A0-16) throws water
-    # out of the tank within 10 steps (measured: 5-7 % of the fluid)
-    sed -i "s/^        spacing  0.0027;.*/        spacing  0.00351;/" "$c/system/particleDict"
     sed -i "s/^endTime .*/endTime $(awk -v n="$steps" 'BEGIN { print n * 1e-4 }');/; s/^writeInterval .*/writeInterval 1;/" "$c/system/controlDict"
     echo "channel mpsdem-table2-$$;" >> "$c/system/couplingDict"
     (cd "$c" && "$ROOT/bin/genParticles" > log.genParticles 2>&1) || { echo "dp $dp: genParticles failed"; continue; }
