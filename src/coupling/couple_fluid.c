@@ -128,7 +128,7 @@ int couple_fluid_set_grains(struct couple_fluid *cf,
             return sim_error(SIM_ERR_PEER, "DEM state: grain %d has radius "
                              "%g", k, r);
         cf->Vs[k] = 4.0 / 3.0 * M_PI * r * r * r;
-        cf->Vg[k] = cf->dim == 3 ? cf->Vs[k] : cf->Vs[k] / cf->dp;
+        cf->Vg[k] = coupling_grain_measure(cf->dim, r, cf->dp);
     }
     if (grew && ng > 0) {
         double *d = malloc((size_t)ng * sizeof *d);

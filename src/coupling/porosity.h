@@ -13,6 +13,7 @@
 #ifndef MPSDEM_COUPLING_POROSITY_H
 #define MPSDEM_COUPLING_POROSITY_H
 
+#include <math.h>
 #include <stdint.h>
 
 struct coupling_pairs;
@@ -24,6 +25,14 @@ static inline double coupling_ws(double r, double re)
         return 0.0;
     double q = r / re, q4 = (q * q) * (q * q);
     return q4 * (4.0 * q - 5.0) + 1.0;
+}
+
+/* V_k of eq. (31) for a sphere of radius r: its volume in 3-D; in 2-D the
+ * area V/dp of the slab one dp deep that the 2-D fluid stands for. */
+static inline double coupling_grain_measure(int dim, double r, double dp)
+{
+    double V = 4.0 / 3.0 * M_PI * r * r * r;
+    return dim == 3 ? V : V / dp;
 }
 
 /* n_s of eq. (30) for dim = 2 or 3 [m^dim]; 0 for another dim. */

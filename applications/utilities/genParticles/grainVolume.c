@@ -64,12 +64,8 @@ static int site_porosity(const struct app *a, const struct gen_case *c,
     Vg = sim_malloc((g->n ? g->n : 1) * sizeof *Vg);
     if (!Vg)
         return SIM_ERR_NOMEM;
-    /* 2-D: a sphere's volume spread over the unit depth dp, as the coupled
-     * solver does (couple_fluid.c). */
-    for (size_t k = 0; k < g->n; k++) {
-        double r = g->radius[k], V = 4.0 / 3.0 * M_PI * r * r * r;
-        Vg[k] = c->dim == 3 ? V : V / c->dp;
-    }
+    for (size_t k = 0; k < g->n; k++)
+        Vg[k] = coupling_grain_measure(c->dim, g->radius[k], c->dp);
     memset(&pairs, 0, sizeof pairs);
     rc = coupling_pairs_build(&pairs, c->dim, cs.radius * c->dp, (int)g->n,
                               g->x, (int)m->n, m->x);
