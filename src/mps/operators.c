@@ -156,6 +156,29 @@ void mps_divergence(const struct neighbour_list *nl, const double *w, int dim,
     }
 }
 
+/* One row of (10) for nc components; nc a constant after inlining, so
+ * that the component loop unrolls, and the porosity test leaves the loop. */
+static inline void laplacian_row(const struct neighbour_list *nl,
+                                 const double *w, int nc, const double *phi,
+                                 const double *inv_eps, int i, double *s)
+{
+    const int64_t k0 = nl->start[i], k1 = nl->start[i + 1];
+    const double *pi = phi + (size_t)nc * i;
+    if (inv_eps)
+        for (int64_t k = k0; k < k1; k++) {
+            int j = nl->j[k];
+            double f = w[k] * inv_eps[j];
+            for (int q = 0; q < nc; q++)
+                s[q] += (phi[(size_t)nc * j + q] - pi[q]) * f;
+        }
+    else
+        for (int64_t k = k0; k < k1; k++) {
+            int j = nl->j[k];
+            for (int q = 0; q < nc; q++)
+                s[q] += (phi[(size_t)nc * j + q] - pi[q]) * w[k];
+        }
+}
+
 void mps_laplacian(const struct neighbour_list *nl, const double *w, int dim,
                    double n0, double lambda, int ncomp, const double *phi,
                    const double *inv_eps, const uint8_t *rows, double *out)
@@ -166,12 +189,12 @@ void mps_laplacian(const struct neighbour_list *nl, const double *w, int dim,
         if (rows && !rows[i])
             continue;
         double s[3] = { 0, 0, 0 };
-        for (int64_t k = nl->start[i]; k < nl->start[i + 1]; k++) {
-            int j = nl->j[k];
-            double f = w[k] * IEPS(j);
-            for (int q = 0; q < ncomp; q++)
-                s[q] += (phi[ncomp * j + q] - phi[ncomp * i + q]) * f;
-        }
+        if (ncomp == 3)
+            laplacian_row(nl, w, 3, phi, inv_eps, i, s);
+        else if (ncomp == 1)
+            laplacian_row(nl, w, 1, phi, inv_eps, i, s);
+        else
+            laplacian_row(nl, w, ncomp, phi, inv_eps, i, s);
         for (int q = 0; q < ncomp; q++)
             out[ncomp * i + q] = c * s[q];
     }

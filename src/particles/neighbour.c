@@ -2,11 +2,13 @@
  *
  * Build: each particle visits only the runs of cells that can hold a point
  * within the cut-off (per row of cells along x, the x-extent left by the
- * row's distance in y and z), so that with cells of half the cut-off about
- * 2.5x fewer candidates are tested than with the 27 cells of side rc. Each
- * thread writes the rows of its contiguous block into its own buffer in a
- * single pass; the blocks are then copied into place (no count pass, no
- * locks). Rows keep the cell-traversal order (z, then y, then x).
+ * row's distance in y and z): corner rows of the 27 cells of side rc are
+ * skipped, and cells down to rc/2 are allowed (fewer candidates, another
+ * particle order). Each thread writes the rows of its contiguous block
+ * into its own buffer in a single branch-free pass; the blocks are then
+ * copied into place (no count pass, no locks). Rows keep the
+ * cell-traversal order (z, then y, then x), so that on the same grid the
+ * rows, and every sum over them, are those of a full 27-cell scan.
  *
  * Update: one pass over each thread's block of candidates keeps the
  * indices of those within the cut-off in a scratch laid out like the
@@ -173,11 +175,12 @@ static int64_t scan(const struct cell_grid *g, const double *x, int i,
 {
     int64_t m = 0;
     const double *xi = x + 3 * i;
+    /* branch-free: the store past the last kept one stays in the room */
     for (int q = 0; q < nrun; q++)
         for (int64_t s = rn[q].a; s < rn[q].b; s++) {
             int j = g->order[s];
-            if (j != i && dist2(xi, x + 3 * j) < rc2)
-                out[m++] = j;
+            out[m] = j;
+            m += (j != i) & (dist2(xi, x + 3 * j) < rc2);
         }
     return m;
 }
