@@ -41,6 +41,19 @@ enum { MPS_FLUID = 0, MPS_WALL = 1, MPS_DUMMY = 2 };
 /* Free-surface flag values (field "freeSurface"). */
 enum { MPS_INNER = 0, MPS_SURFACE = 1, MPS_DRY_WALL = 2 };
 
+/* pressureGradient: eq. (8) | Koshizuka p_min | corrective matrix (GC). */
+enum { MPS_GRAD_SYMMETRIC = 0, MPS_GRAD_PMIN = 1, MPS_GRAD_CORRECTED = 2 };
+
+/* dummyPressure: nearest wall particle (A.9) | 0 | wall and dummy
+ * pressure extrapolated from the fluid (Adami et al. 2012; walls.c). */
+enum {
+    MPS_DUMMY_P_WALL = 0, MPS_DUMMY_P_ZERO = 1, MPS_DUMMY_P_EXTRAPOLATED = 2
+};
+
+/* freeSurface { pressure }: P = 0 at surface particles (A.4) | p = 0 on
+ * the surface dp/2 outside them (surface_pressure.c). */
+enum { MPS_FS_P_ZERO = 0, MPS_FS_P_EXTRAPOLATED = 1 };
+
 struct mps_particles {
     int n, cap, dim;
     double *x;        /* 3n positions [m]                                */
@@ -72,16 +85,17 @@ struct mps_settings {
     const struct mps_kernel_ops *kernel;
     double re_n, re_grad, re_lap;   /* radii in units of dp             */
     double gamma;                   /* PPE source mix (eq. 12)          */
-    int gradient_pmin;              /* 0: eq. (8); 1: Koshizuka p_min   */
+    int gradient;                   /* MPS_GRAD_*: eq. (8) by default   */
     int predictor;                  /* PPE at r* = r + dt u* (Koshizuka) */
     int clip_negative;              /* p < 0 set to 0 after the PPE     */
     double beta, alpha, fs_n_max;   /* eqs. 14, 16 and A0-07 (0.97)     */
+    int fs_pressure;                /* MPS_FS_P_*: 0 on the surface     */
     double beta_porous;             /* eq. 14 where eps < 1 (0.8)       */
     const struct mps_stabiliser_ops *collision; /* "none" by default    */
     double collision_ratio, collision_restitution;
     const struct mps_stabiliser_ops *shifting;  /* "none" by default    */
     double shifting_coeff;
-    int dummy_pressure_zero;        /* 0: nearest wall (A.9 default)    */
+    int dummy_pressure;             /* MPS_DUMMY_P_*: nearest wall      */
     int renumber_interval;          /* list rebuilds                    */
     double skin;                    /* neighbour-list skin [dp]; the    */
                                     /* list is reused while no particle */

@@ -73,6 +73,9 @@ static int read_free_surface(const struct dict *d, struct mps_settings *S)
     TRY(dict_get_scalar_or(fs, "vectorDensityLimit", S->fs_n_max,
                            &S->fs_n_max));
     TRY(positive(fs, "vectorDensityLimit", S->fs_n_max, 0, 2));
+    static const char *const kinds[] = { "zero", "extrapolated", NULL };
+    TRY(dict_get_word_or(fs, "pressure", kinds, S->fs_pressure,
+                         &S->fs_pressure));
     TRY(dict_get_scalar_or(fs, "betaPorous", S->beta_porous,
                            &S->beta_porous));
     TRY(positive(fs, "betaPorous", S->beta_porous, 0, 1));
@@ -98,7 +101,8 @@ static int read_stabilisers(const struct dict *d, struct mps_settings *S)
     TRY(model_select(d, "shifting", "particle shifting",
                      (const void *const *)mps_shifting_table, "none", &m));
     S->shifting = m;
-    TRY(dict_find_dict(d, "xu2009Coeffs", &c));
+    TRY(dict_find_dict(d, S->shifting == &mps_shifting_lind2012
+                           ? "lind2012Coeffs" : "xu2009Coeffs", &c));
     if (c) {
         TRY(dict_get_scalar_or(c, "coefficient", S->shifting_coeff,
                                &S->shifting_coeff));
@@ -110,15 +114,17 @@ static int read_stabilisers(const struct dict *d, struct mps_settings *S)
 static int read_schemes(const struct dict *d, struct mps_settings *S)
 {
     const void *k;
-    static const char *const grads[] = { "symmetric", "minimum", NULL };
-    static const char *const dummies[] = { "nearestWall", "zero", NULL };
+    static const char *const grads[] = { "symmetric", "minimum", "corrected",
+                                         NULL };
+    static const char *const dummies[] = { "nearestWall", "zero",
+                                           "extrapolated", NULL };
     int idx;
     TRY(model_select(d, "kernel", "MPS kernel",
                      (const void *const *)mps_kernel_table, "zhang2014", &k));
     S->kernel = k;
     TRY(read_radii(d, S));
     TRY(dict_get_word_or(d, "pressureGradient", grads, 0, &idx));
-    S->gradient_pmin = idx == 1;
+    S->gradient = idx;
     TRY(dict_get_bool_or(d, "predictor", S->predictor, &S->predictor));
     TRY(dict_get_bool_or(d, "clipNegativePressure", S->clip_negative,
                          &S->clip_negative));
@@ -129,7 +135,7 @@ static int read_schemes(const struct dict *d, struct mps_settings *S)
     TRY(read_free_surface(d, S));
     TRY(read_stabilisers(d, S));
     TRY(dict_get_word_or(d, "dummyPressure", dummies, 0, &idx));
-    S->dummy_pressure_zero = idx == 1;
+    S->dummy_pressure = idx;
     long r;
     TRY(dict_get_label_or(d, "renumberInterval", S->renumber_interval, &r));
     if (r < 0 || r > 1000000)

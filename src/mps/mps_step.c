@@ -19,6 +19,7 @@
 #include <string.h>
 
 #include "core/error.h"
+#include "mps/gradient_corrected.h"
 #include "mps/mps.h"
 #include "mps/mps_impl.h"
 #include "mps/stabiliser/stabiliser.h"
@@ -78,7 +79,10 @@ static void density(struct mps_solver *s)
 static void correct(struct mps_solver *s, double dt)
 {
     struct mps_particles *P = &s->P;
-    if (s->S.gradient_pmin)
+    if (s->S.gradient == MPS_GRAD_CORRECTED)
+        mps_gradient_corrected(&s->nl, s->w_g, P->dim, s->Lg.n0, P->x, P->p,
+                               P->inv_eps, s->rows_fluid, s->grad);
+    else if (s->S.gradient == MPS_GRAD_PMIN)
         mps_gradient_pmin(&s->nl, s->w_g, P->dim, s->Lg.n0, P->x, P->p,
                           P->inv_eps, s->rows_fluid, s->grad);
     else

@@ -9,7 +9,9 @@
  * the number density), the divergence (9) on the gradient radius, and <n^m>
  * at the current positions (A0-05: no predictor position update).
  * Unknowns are the fluid and wall particles that are neither free surface
- * nor dry wall; those carry the Dirichlet value P = 0 and drop out.
+ * nor dry wall; those carry the Dirichlet value P = 0 and drop out (with
+ * `freeSurface { pressure extrapolated; }` surface particles carry the
+ * value of surface_pressure.c instead, moved to the right-hand side).
  * We solve A p = b with A = -lap (SPD M-matrix for eps = 1), so
  *   A_ii = c sum_j w_ij/eps_j,  A_ij = -c w_ij/eps_j (j unknown),
  *   c = 2d/(n0 lambda),  b_i = -RHS_i.
@@ -26,6 +28,7 @@
 #include "core/log.h"
 #include "mps/mps.h"
 #include "mps/mps_impl.h"
+#include "mps/surface_pressure.h"
 
 static int grow_matrix(struct mps_solver *s, int64_t nnz)
 {
@@ -55,6 +58,21 @@ static int number_unknowns(struct mps_solver *s)
         s->unk[i] = (inside && P->fs[i] == MPS_INNER) ? m++ : -1;
     }
     return m;
+}
+
+/* Pressure of the rows that drop out: 0 (dry walls; surface particles by
+ * default) or the extrapolated surface value (surface_pressure.c). */
+static void dirichlet_values(struct mps_solver *s)
+{
+    struct mps_particles *P = &s->P;
+    if (s->S.fs_pressure == MPS_FS_P_EXTRAPOLATED)
+        mps_surface_pressure(s);
+#pragma omp parallel for schedule(static)
+    for (int i = 0; i < P->n; i++)
+        if (P->type[i] != MPS_DUMMY && s->unk[i] < 0
+            && !(P->type[i] == MPS_FLUID && P->fs[i] == MPS_SURFACE
+                 && s->S.fs_pressure == MPS_FS_P_EXTRAPOLATED))
+            P->p[i] = 0;
 }
 
 static int assemble(struct mps_solver *s, int m)
@@ -87,7 +105,7 @@ static int assemble(struct mps_solver *s, int m)
         if (r < 0)
             continue;
         int64_t pos = rp[r] + 1;
-        double diag = 0;
+        double diag = 0, bd = 0;
         for (int64_t k = nl->start[i]; k < nl->start[i + 1]; k++) {
             int j = nl->j[k];
             if (w[k] == 0 || P->type[j] == MPS_DUMMY)
@@ -97,8 +115,11 @@ static int assemble(struct mps_solver *s, int m)
             if (s->unk[j] >= 0) {
                 s->A.col[pos] = s->unk[j];
                 s->A.val[pos++] = -a;
+            } else {
+                bd += a * P->p[j];      /* Dirichlet neighbour */
             }
         }
+        s->b[r] = bd;
         s->A.col[rp[r]] = r;
         /* A row with no fluid/wall neighbour cannot happen for an inner
          * particle (n >= beta n0); keep the matrix regular anyway. */
@@ -123,7 +144,7 @@ static void source(struct mps_solver *s, double dt)
                    - g * rho / (dt * dt) * dn;
         if (P->ppe_scale) /* Model B: eps_i (eq. 13) */
             rhs *= P->ppe_scale[i];
-        s->b[r] = -rhs;
+        s->b[r] -= rhs;
         s->sol[r] = P->p[i];
     }
 }
@@ -133,6 +154,7 @@ int mps_ppe_solve(struct mps_solver *s, double dt)
     struct mps_particles *P = &s->P;
     double t0 = omp_get_wtime();
     int m = number_unknowns(s);
+    dirichlet_values(s);
     TRY(assemble(s, m));
     source(s, dt);
     double t1 = omp_get_wtime();
@@ -151,7 +173,8 @@ int mps_ppe_solve(struct mps_solver *s, double dt)
 #pragma omp parallel for schedule(static)
     for (int i = 0; i < P->n; i++)
         if (P->type[i] != MPS_DUMMY)
-            P->p[i] = s->unk[i] >= 0 ? s->sol[s->unk[i]] : 0.0;
+            if (s->unk[i] >= 0)
+                P->p[i] = s->sol[s->unk[i]];
     if (rc) {
         char why[512];
         snprintf(why, sizeof why, "%s", sim_error_message());

@@ -9,6 +9,19 @@
  *     nearest wall particle (A.9 default; `dummyPressure zero;` gives the
  *     Koshizuka original p = 0), so that the (p_i + p_j) gradient (eq. 8)
  *     holds the fluid off the wall;
+ *   - `dummyPressure extrapolated;` instead sets, after the PPE, the
+ *     pressure of every wall and dummy particle with fluid neighbours
+ *     (gradient radius) from them, as in Adami, Hu and Adams (2012,
+ *     J. Comput. Phys. 231, 7057, eq. 27, fixed wall):
+ *       p_w = sum_f (p_f + rho g.(r_w - r_f)) w_wf / sum_f w_wf
+ *     (the PPE still solves the wall rows: they keep the fluid from
+ *     entering the wall; only the gradient and the loads see p_w). A
+ *     hydrostatic field then stays linear across the wall, so that a
+ *     first-order consistent gradient (pressureGradient corrected) feels
+ *     no wall force in still water, and a wall particle beside the free
+ *     surface carries the surface pressure instead of the 0 of a dry or
+ *     the suction of a half-empty PPE row. Dummies out of reach of the
+ *     fluid take their partner's value plus rho g.(r_dummy - r_wall);
  *   - the load on a patch is F = sum_i p_i dp^(d-1) n_i over its wall
  *     particles, n_i the unit normal from the fluid into the solid
  *     (A.9 [P]); in 2-D it is per unit depth [N/m]. Known bias: the wall
@@ -75,14 +88,62 @@ int mps_find_partners(struct mps_solver *s)
     return SIM_OK;
 }
 
+/* Adami et al. (2012) eq. (27) with a fixed wall: the fluid pressure of the
+ * neighbours within the gradient radius, each carried to r_i along the
+ * hydrostatic gradient. Returns 0 if i has no fluid neighbour. */
+static int extrapolate(const struct mps_solver *s, int i, double *p)
+{
+    const struct mps_particles *P = &s->P;
+    const struct neighbour_list *nl = &s->nl;
+    const double rho = s->S.rho, *g = s->S.g;
+    double sw = 0, sp = 0;
+    for (int64_t k = nl->start[i]; k < nl->start[i + 1]; k++) {
+        int j = nl->j[k];
+        double w = s->w_g[k];
+        if (w == 0 || P->type[j] != MPS_FLUID)
+            continue;
+        double pj = P->p[j];
+        for (int q = 0; q < 3; q++)
+            pj += rho * g[q] * (P->x[3 * i + q] - P->x[3 * j + q]);
+        sw += w;
+        sp += w * pj;
+    }
+    if (sw == 0)
+        return 0;
+    *p = sp / sw;
+    return 1;
+}
+
 void mps_dummy_pressure(struct mps_solver *s)
 {
     struct mps_particles *P = &s->P;
-    const int zero = s->S.dummy_pressure_zero;
+    const int mode = s->S.dummy_pressure;
+    const double rho = s->S.rho, *g = s->S.g;
+    if (mode == MPS_DUMMY_P_EXTRAPOLATED) {
+        /* wall particles first: deep dummies fall back on their partner */
 #pragma omp parallel for schedule(static)
-    for (int i = 0; i < P->n; i++)
-        if (P->type[i] == MPS_DUMMY)
-            P->p[i] = (!zero && P->partner[i] >= 0) ? P->p[P->partner[i]] : 0;
+        for (int i = 0; i < P->n; i++)
+            if (P->type[i] == MPS_WALL && !extrapolate(s, i, &P->p[i]))
+                P->p[i] = 0;
+    }
+#pragma omp parallel for schedule(static)
+    for (int i = 0; i < P->n; i++) {
+        if (P->type[i] != MPS_DUMMY)
+            continue;
+        int w = P->partner[i];
+        if (mode == MPS_DUMMY_P_EXTRAPOLATED && extrapolate(s, i, &P->p[i]))
+            continue;
+        if (mode == MPS_DUMMY_P_ZERO || w < 0) {
+            P->p[i] = 0;
+            continue;
+        }
+        double p = P->p[w];
+        /* a dry partner (no water near) gives 0, not a suction */
+        if (mode == MPS_DUMMY_P_EXTRAPOLATED && p > 0)
+            for (int q = 0; q < 3; q++)
+                p += rho * g[q] * (P->x[3 * i + q] - P->x[3 * w + q]);
+        P->p[i] = p;
+    }
 }
 
 void mps_wall_forces(const struct mps_solver *s, int npatch, double *force)

@@ -2,10 +2,12 @@
 # mpsHydrostatic2D.sh — quick checks of mpsFluid on the 2-D still-water
 # tutorial (tutorials/mpsFluid/hydrostaticTank2D, 400 fluid particles,
 # 1 s, ~5 s of CPU):
-#   E1-08 (2-D quick version): L2 of the time-averaged pressure over the
-#         last 0.2 s < 6 %, max fluid speed < 15 % sqrt(g h) (measured
-#         0.024-0.037 and 5-8 % across code versions: the max is spiky)
-#   E1-07: deep particles flagged as surface < 0.5 %
+#   E1-08 (2-D quick version, the tutorial's still-water options):
+#         L2 of the time-averaged pressure over the last 0.2 s < 1.5 %,
+#         max fluid speed < 1 % sqrt(g h) (the E1-08 target; measured
+#         0.48 % and 0.27 %)
+#   E1-07: deep particles flagged as surface < 0.5 % (measured 0); the
+#         surface flags are exactly the 20 top-layer particles at 0.5 s
 #   volume: no particle lost, run ends with End; probe and wave gauge
 #   restart: 0 -> 0.1 s in one run equals 0 -> 0.05 s + restart to 0.1 s
 #            to round-off (1e-9 relative; measured 3e-14 relative)
@@ -39,20 +41,24 @@ else
     out=$("$TUT/validation/hydrostatic.sh" "$c" 0.2)
     val() { echo "$out" | awk -v k=$1 '$1 == k { print $2 }'; }
     echo "    $(echo $out)"
-    awk -v v=$(val L2) 'BEGIN { exit !(v < 0.06) }' && pass hydrostatic2D_L2 \
-        || fail hydrostatic2D_L2 "time-averaged pressure L2 $(val L2) >= 0.06"
-    awk -v v=$(val umax_rel) 'BEGIN { exit !(v < 0.15) }' && pass hydrostatic2D_umax \
-        || fail hydrostatic2D_umax "max |u| / sqrt(gh) $(val umax_rel) >= 0.15"
+    awk -v v=$(val L2) 'BEGIN { exit !(v < 0.015) }' && pass hydrostatic2D_L2 \
+        || fail hydrostatic2D_L2 "time-averaged pressure L2 $(val L2) >= 0.015"
+    awk -v v=$(val umax_rel) 'BEGIN { exit !(v < 0.01) }' && pass hydrostatic2D_umax \
+        || fail hydrostatic2D_umax "max |u| / sqrt(gh) $(val umax_rel) >= 0.01"
     awk -v v=$(val deepfs) 'BEGIN { exit !(v < 0.005) }' && pass hydrostatic2D_freeSurface \
         || fail hydrostatic2D_freeSurface "deep particles flagged $(val deepfs)"
+    top=$("$ROOT/bin/vtuInfo" -dump "$c/0.5/fluid.vtu" 2>/dev/null | awk '!/^#/ && NF > 14 && $4 == 0 && $15 == 1 { n++; if ($2 < 0.095) low++ } END { print n + 0, low + 0 }')
+    [ "$top" = "20 0" ] && pass hydrostatic2D_topLayer \
+        || fail hydrostatic2D_topLayer "surface flags at 0.5 s (count, below the top layer): $top (20 0 expected)"
     # probes and wave gauge over the last 0.2 s: bottom probe at y = 0.0025
-    # against rho g (h - y) = 956.6 Pa within 5 %; surface at h = 0.1 m
-    # within dp/2 (function objects probes and waveGauges)
+    # against rho g (h - y) = 956.6 Pa within 1 % (measured 958.7); surface
+    # at h = 0.1 m within dp/10 (measured 0.10026; function objects probes
+    # and waveGauges)
     pb=$(awk '!/^#/ && $1 >= 0.8 { s += $2; n++ } END { print s / n }' "$c/postProcessing/bottom/0/probes.dat")
-    awk -v p=$pb 'BEGIN { e = (p - 956.6) / 956.6; exit !(e < 0.05 && e > -0.05) }' \
+    awk -v p=$pb 'BEGIN { e = (p - 956.6) / 956.6; exit !(e < 0.01 && e > -0.01) }' \
         && pass hydrostatic2D_probe || fail hydrostatic2D_probe "bottom pressure $pb Pa (956.6 expected)"
     hg=$(awk '!/^#/ && $1 >= 0.8 { s += $2; n++ } END { print s / n }' "$c/postProcessing/level/0/waveGauges.dat")
-    awk -v h=$hg 'BEGIN { exit !(h > 0.0975 && h < 0.1025) }' \
+    awk -v h=$hg 'BEGIN { exit !(h > 0.0995 && h < 0.1005) }' \
         && pass hydrostatic2D_gauge || fail hydrostatic2D_gauge "surface at $hg m (0.1 expected)"
     vol="$c/postProcessing/volume/0/volume.dat"
     if awk '!/^#/ { if ($2 != 400 || $4 != 0 || $5 != 0) bad = 1; n++ } END { exit !(n > 10 && !bad) }' "$vol"; then

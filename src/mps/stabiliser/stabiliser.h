@@ -22,6 +22,7 @@ struct mps_stabiliser_ops {
 extern const struct mps_stabiliser_ops mps_stabiliser_none;
 extern const struct mps_stabiliser_ops mps_collision_lee2011;
 extern const struct mps_stabiliser_ops mps_shifting_xu2009;
+extern const struct mps_stabiliser_ops mps_shifting_lind2012;
 
 extern const struct mps_stabiliser_ops *const mps_collision_table[];
 extern const struct mps_stabiliser_ops *const mps_shifting_table[];

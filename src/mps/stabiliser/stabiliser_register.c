@@ -21,5 +21,6 @@ const struct mps_stabiliser_ops *const mps_collision_table[] = {
 };
 
 const struct mps_stabiliser_ops *const mps_shifting_table[] = {
-    &mps_stabiliser_none, &mps_shifting_xu2009, NULL
+    &mps_stabiliser_none, &mps_shifting_xu2009, &mps_shifting_lind2012,
+    NULL
 };
