@@ -6,7 +6,8 @@
 #   test/bench/mpsDemStress.sh [--quick] [--keep] [a] [b] [c]
 #
 # (a) long settling: the 2-D sedimentation case of
-#     test/cases/mpsDemSedimentation2D.sh (15 beads of 5 mm, dp = 5 mm),
+#     test/cases/mpsDemSedimentation2D.sh (15 beads of 5 mm, dp = 5 mm, the
+#     fluid leaving out the grain volume: grainVolume scale),
 #     Model B, to 5 s (--quick 2 s); Model A beside it, reported only.
 #     Bands (B):
 #       settled      t_s = first time after the kinetic-energy peak with
@@ -117,7 +118,7 @@ regions
 (
     tank  { type tankWall; shape box; min (0 0 0); max (0.05 0.15 0); open (ymax); }
     water { type fluid; shape box; min (0 0 0); max (0.05 0.1 0); hydrostaticPressure yes;
-            jitter $6; seed $8; }
+            grainVolume scale; jitter $6; seed $8; }
     beads { type grains; shape box; min (0.0025 0.0105 0);
             max ($(awk -v a="$amp" 'BEGIN { print 0.0475 + a, 0.0405 + a }') 0);
             diameter 0.005; lattice cubic; spacing 0.01; jitter $7; seed $8; }
