@@ -317,7 +317,7 @@ section_c()
     local -a ladder=(4e-4 6.25e-4 1e-3 1.25e-3 1.5625e-3 2e-3 2.5e-3 3.125e-3 5e-3 6.25e-3 1e-2)
     [ $quick = 1 ] && end=0.05
     echo
-    echo "(c) root case (3-D two-phase dam break, 4000 fluid particles, 490 beads) to $end s: deltaT ladder"
+    echo "(c) root case (3-D two-phase dam break, system/ and constant/ of the repository) to $end s: deltaT ladder"
     echo "  Co_est = 2 sqrt(g 0.1 m) deltaT / dp; x_water, x_sed: fronts (function objects) at the end, and"
     echo "  their difference from the first rung's (the smallest step) [m]"
     printf "  %-5s %9s %7s %6s %4s %4s %4s %7s %8s %8s %8s %8s  %s\n" model deltaT wall_s Co_est nan esc rem dV x_water dx_water x_sed dx_sed survives
@@ -333,6 +333,7 @@ section_c()
                 "$c/system/controlDict"
             local t0=$SECONDS
             r=$(run_case "$c" 1200)
+            [ $model = A ] && [ $dt = 4e-4 ] && echo "  $(grep '^MPS particles' "$c/log.genParticles")"
             local wall=$((SECONDS - t0)) s=no h="? ? ? ?" dv="?" xw="?" xs="?" dxw="?" dxs="?"
             if [ "$r" = ok ]; then
                 h=$(health "$c" 0.2)
