@@ -17,27 +17,43 @@
 cd "${0%/*}/.." || exit 1
 cases=("$@"); [ ${#cases[@]} -eq 0 ] && cases=(modelA modelB)
 fails=0
+T=$(mktemp -d)
+trap 'rm -rf "$T"' EXIT
+# series DIR FO FILE: the rows of postProcessing/FO/<start>/FILE of all
+# start times (a restarted run opens a new one), in time order
+series() {
+    local d
+    for d in "$1/postProcessing/$2"/*/; do
+        cat "$d$3"
+    done | awk '!/^#/' | sort -g -k1,1
+}
 for c in "${cases[@]}"; do
     P="$c/postProcessing"
-    [ -f "$P/energy/0/kineticEnergy.dat" ] || { echo "FAIL $c: no run (no $P/energy)"; fails=$((fails + 1)); continue; }
+    [ -d "$P/energy" ] || { echo "FAIL $c: no run (no $P/energy)"; fails=$((fails + 1)); continue; }
+    series "$c" energy kineticEnergy.dat > "$T/energy"
+    series "$c" forces couplingForces.dat > "$T/forces"
+    series "$c" floor wallForces.dat > "$T/floor"
+    series "$c" level waveGauges.dat > "$T/level"
+    series "$c" bottom probes.dat > "$T/bottom"
+    series "$c" volume volume.dat > "$T/volume"
     model=$(sed -n 's/^model *\([AB]\);.*/\1/p' "$c/system/couplingDict")
-    tend=$(awk '!/^#/ { t = $1 } END { print t }' "$P/energy/0/kineticEnergy.dat")
+    tend=$(awk '!/^#/ { t = $1 } END { print t }' "$T/energy")
     t45=$(awk -v e="$tend" 'BEGIN { print (e < 0.45 ? e : 0.45) }')
     # kinetic energy: peak, at 0.3 s and at t45
     read -r kpeak k30 k45 <<< "$(awk -v t=$t45 '!/^#/ { if ($4 > p) p = $4
         if ($1 <= 0.3 + 1e-9) a = $4; if ($1 <= t + 1e-9) b = $4 } END { print p, a, b }' \
-        "$P/energy/0/kineticEnergy.dat")"
+        "$T/energy")"
     # drag and pressure-gradient force (B: buoyancy) at t45
     read -r drag pres <<< "$(awk -v t=$t45 '!/^#/ && $1 <= t + 1e-9 {
-        d = sqrt($2^2 + $3^2 + $4^2); p = $7 } END { print d, p }' "$P/forces/0/couplingForces.dat")"
+        d = sqrt($2^2 + $3^2 + $4^2); p = $7 } END { print d, p }' "$T/forces")"
     # last 0.05 s: floor load, surface height, bottom-centre pressure
     floor=$(awk -v e="$tend" '!/^#/ && $1 > e - 0.05 { s += $4; n++ } END { print (n ? s / n : "nan") }' \
-        "$P/floor/0/wallForces.dat")
+        "$T/floor")
     hfs=$(awk -v e="$tend" '!/^#/ && $1 > e - 0.05 { s += $2; n++ } END { print (n ? s / n : "nan") }' \
-        "$P/level/0/waveGauges.dat")
+        "$T/level")
     pb=$(awk -v e="$tend" '!/^#/ && $1 > e - 0.05 { s += $2; n++ } END { print (n ? s / n : "nan") }' \
-        "$P/bottom/0/probes.dat")
-    dv=$(awk '!/^#/ { d = $4 < 0 ? -$4 : $4; if (d > m) m = d } END { print m + 0 }' "$P/volume/0/volume.dat")
+        "$T/bottom")
+    dv=$(awk '!/^#/ { d = $4 < 0 ? -$4 : $4; if (d > m) m = d } END { print m + 0 }' "$T/volume")
     echo "== $c (model $model, run to $tend s)"
     awk -v kp="$kpeak" -v k3="$k30" -v k4="$k45" -v t="$t45" -v dr="$drag" -v pr="$pres" \
         -v fl="$floor" -v h="$hfs" -v pb="$pb" -v dv="$dv" 'BEGIN {
