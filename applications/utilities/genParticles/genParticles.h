@@ -37,8 +37,9 @@ struct region {
     double surface;         /* fluid: free-surface height [m]            */
     double diameter;        /* grains [m]                                */
     double spacing;         /* grains: lattice spacing [m]               */
-    double jitter;          /* grains: amplitude, fraction of spacing    */
-    long seed;              /* grains: jitter seed                       */
+    double jitter;          /* amplitude: grains, fraction of spacing;
+                               fluid, fraction of dp                     */
+    long seed;              /* jitter seed (grains, fluid)               */
     enum lattice_kind lattice; /* grains                                 */
     /* filled in by the generator */
     double clo[3], chi[3];  /* box outside which it claims no site [m]   */
