@@ -19,16 +19,7 @@ maxx() {   # largest grain centre x in a dem.vtu (ascii)
 }
 for model in A B; do
     c="$TMP/$model"
-    mkdir -p "$c/system" "$c/constant" "$c/0"
-    cp "$ROOT"/system/{controlDict,couplingDict,mpsSchemes,mpsSolution,demSolution} "$c/system/"
-    cp "$ROOT"/constant/{demProperties,transportProperties} "$c/constant/"
-    cp "$ROOT/tutorials/mpsFluid/damBreak2D/constant/g" "$c/constant/"
-    cat > "$c/system/particleDict" <<'EOD'
-FoamFile { version 2.0; format ascii; class dictionary; object particleDict; }
-dimension    2;
-dp           0.005;
-kernelRadius 3.1;
-wallLayers   auto;
+    case_2d "$c" "$ROOT/system/controlDict" <<'EOD'
 regions
 (
     tank   { type tankWall; shape box; min (0 0 0); max (0.2 0.15 0); open (ymax); }

@@ -36,3 +36,19 @@ run_tandem()
 
 # fatal_of DIR: the first FATAL ERROR lines of the logs in DIR, one line.
 fatal_of() { grep -h -A2 FATAL "$1"/log.* 2>/dev/null | head -4 | tr '\n' ' '; }
+
+# case_2d DIR [FILE...] < REGIONS: a 2-D coupled case in DIR built from the
+# root case's coupling, MPS and DEM dictionaries (plus the FILEs, copied to
+# system/), gravity along -y, and a particleDict with dp = 5 mm whose
+# regions list is read from standard input.
+case_2d()
+{
+    local c="$1"; shift
+    mkdir -p "$c/system" "$c/constant" "$c/0"
+    cp "$ROOT"/system/{couplingDict,mpsSchemes,mpsSolution,demSolution} "$@" "$c/system/"
+    cp "$ROOT"/constant/{demProperties,transportProperties} "$c/constant/"
+    cp "$ROOT/tutorials/mpsFluid/damBreak2D/constant/g" "$c/constant/"
+    { printf '%s\n' "FoamFile { version 2.0; format ascii; class dictionary; object particleDict; }" \
+          "dimension    2;" "dp           0.005;" "kernelRadius 3.1;" "wallLayers   auto;"
+      cat; } > "$c/system/particleDict"
+}
