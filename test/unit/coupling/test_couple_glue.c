@@ -23,6 +23,7 @@
 #include <unistd.h>
 
 #include "../dem/dem_test_helpers.h"
+#include "../mps/mps_test_tank.h"
 #include "core/dict.h"
 #include "core/error.h"
 #include "core/log.h"
@@ -82,33 +83,7 @@ static void build_tank(struct mps_particles *P, int nx, int ny, int nz,
 /* 2-D: fluid nx x ny cells in the x-y plane, gravity along -y. */
 static void build_tank2d(struct mps_particles *P, int nx, int ny, double dp)
 {
-    const int L = 3;
-    int cap = (nx + 2 * L) * (ny + 3 + L), n = 0;
-    assert_int_equal(mps_particles_alloc(P, cap, 2), 0);
-    for (int i = -L; i < nx + L; i++)
-        for (int j = -L; j < ny + 3; j++) {
-            int di = i < 0 ? -i : i >= nx ? i - nx + 1 : 0;
-            int dj = j < 0 ? -j : 0;
-            int depth = di > dj ? di : dj;
-            int fluid = depth == 0 && j < ny;
-            if (depth == 0 && !fluid)
-                continue;
-            double *x = P->x + 3 * n;
-            x[0] = (i + 0.5) * dp;
-            x[1] = (j + 0.5) * dp;
-            P->type[n] = fluid ? MPS_FLUID : depth == 1 ? MPS_WALL : MPS_DUMMY;
-            P->patch[n] = fluid ? -1 : 0;
-            if (!fluid) {
-                double nv[2] = { i < 0 ? -1 : i >= nx ? 1 : 0, j < 0 ? -1 : 0 };
-                double l = hypot(nv[0], nv[1]);
-                P->normal[3 * n] = nv[0] / l;
-                P->normal[3 * n + 1] = nv[1] / l;
-            }
-            n++;
-        }
-    P->n = n;
-    for (int i = 0; i < n; i++)
-        P->id[i] = i;
+    mps_test_tank2d(P, nx, ny, 3, 3, dp);
 }
 
 /* nz = 0: a 2-D tank nx x ny with gravity along -y. */

@@ -23,6 +23,7 @@
 #include "mps/operators.h"
 #include "mps/stabiliser/stabiliser.h"
 #include "particles/neighbour.h"
+#include "mps_test_tank.h"
 
 /* deterministic jitter in [-a, a] */
 static double jit(unsigned *seed, double a)
@@ -111,28 +112,13 @@ static void test_gc_fallback(void **st)
 enum { NX = 20, NY = 20, LAYERS = 4 };
 static const double DP = 0.005, RHO = 1000, G = 9.81;
 
-/* 2-D tank as in test_step.c, fluid started from p = rho g (h - y). */
+/* The tank of test_step.c, fluid started from p = rho g (h - y). */
 static void build_tank(struct mps_particles *P)
 {
-    int n = 0, cap = (NX + 2 * LAYERS) * (NY + 6 + LAYERS);
-    assert_int_equal(mps_particles_alloc(P, cap, 2), 0);
-    for (int i = -LAYERS; i < NX + LAYERS; i++)
-        for (int j = -LAYERS; j < NY + 6; j++) {
-            int di = i < 0 ? -i : i >= NX ? i - NX + 1 : 0;
-            int dj = j < 0 ? -j : 0;
-            int depth = di > dj ? di : dj;
-            int fluid = depth == 0 && j < NY;
-            if (depth == 0 && !fluid)
-                continue;
-            P->x[3 * n] = (i + 0.5) * DP;
-            P->x[3 * n + 1] = (j + 0.5) * DP;
-            P->type[n] = fluid ? MPS_FLUID : depth == 1 ? MPS_WALL : MPS_DUMMY;
-            P->patch[n] = fluid ? -1 : 0;
-            P->p[n] = fluid ? RHO * G * (NY * DP - P->x[3 * n + 1]) : 0;
-            P->id[n] = n;
-            n++;
-        }
-    P->n = n;
+    mps_test_tank2d(P, NX, NY, LAYERS, 6, DP);
+    for (int n = 0; n < P->n; n++)
+        if (P->type[n] == MPS_FLUID)
+            P->p[n] = RHO * G * (NY * DP - P->x[3 * n + 1]);
 }
 
 static void test_still_tank(void **st)

@@ -17,42 +17,16 @@
 #include "linsolve/linsolve.h"
 #include "mps/mps.h"
 #include "mps/stabiliser/stabiliser.h"
+#include "mps_test_tank.h"
 
 enum { NX = 20, NY = 20, LAYERS = 4 };
 static const double DP = 0.005;
 
-/* Tank: fluid NX x NY cells [0, NX dp] x [0, NY dp] (particle centres at
- * (i + 1/2) dp), one wall layer and LAYERS-1 dummy layers on the bottom
- * and sides, side walls NY + 6 particles high. */
+/* The tank of mps_test_tank.h: NX x NY fluid cells, LAYERS wall + dummy
+ * layers, side walls NY + 6 particles high. */
 static void build_tank(struct mps_particles *P)
 {
-    int n = 0, cap = (NX + 2 * LAYERS) * (NY + 6 + LAYERS);
-    assert_int_equal(mps_particles_alloc(P, cap, 2), 0);
-    for (int i = -LAYERS; i < NX + LAYERS; i++)
-        for (int j = -LAYERS; j < NY + 6; j++) {
-            int di = i < 0 ? -i : i >= NX ? i - NX + 1 : 0;
-            int dj = j < 0 ? -j : 0;
-            int depth = di > dj ? di : dj;
-            int fluid = depth == 0 && j < NY;
-            if (depth == 0 && !fluid)
-                continue;
-            double *x = P->x + 3 * n;
-            x[0] = (i + 0.5) * DP;
-            x[1] = (j + 0.5) * DP;
-            P->type[n] = fluid ? MPS_FLUID : depth == 1 ? MPS_WALL : MPS_DUMMY;
-            P->patch[n] = fluid ? -1 : 0;
-            if (!fluid) {
-                /* normal from the fluid into the solid */
-                double nx = i < 0 ? -1 : i >= NX ? 1 : 0, ny = j < 0 ? -1 : 0;
-                double l = sqrt(nx * nx + ny * ny);
-                P->normal[3 * n] = nx / l;
-                P->normal[3 * n + 1] = ny / l;
-            }
-            n++;
-        }
-    P->n = n;
-    for (int i = 0; i < n; i++)
-        P->id[i] = i;
+    mps_test_tank2d(P, NX, NY, LAYERS, 6, DP);
 }
 
 static void make_solver(struct mps_solver *s, const char *ls_name,
