@@ -448,20 +448,28 @@ static void ch_grain(struct dem *d, void **integ)
     assert_int_equal(dem_integrator_verlet.create(d, &ip, integ), 0);
 }
 
+/* demSolid's start in a child process: the grain, the glue, the channel
+ * and the state at t = 0. */
+static int dem_side_start(const char *name, struct couple_dem *cd,
+                          struct dem *d, void **integ)
+{
+    struct dict *cdd = channel_dict(name), *tp = transport_dict();
+    ch_grain(d, integ);
+    int rc = couple_dem_init(cd, cdd, tp, d->gravity);
+    if (!rc)
+        rc = couple_dem_open(cd, cdd, "/tmp", "demSolid", 2);
+    if (!rc)
+        rc = couple_dem_send(cd, d, 0, d->t);
+    return rc;
+}
+
 /* demSolid's loop (applications/solvers/demSolid) in a child process. */
 static int dem_side(void *arg)
 {
-    const char *name = arg;
-    struct dict *cdd = channel_dict(name), *tp = transport_dict();
     struct couple_dem cd;
     struct dem d;
     void *integ;
-    ch_grain(&d, &integ);
-    int rc = couple_dem_init(&cd, cdd, tp, d.gravity);
-    if (!rc)
-        rc = couple_dem_open(&cd, cdd, "/tmp", "demSolid", 2);
-    if (!rc)
-        rc = couple_dem_send(&cd, &d, 0, d.t);
+    int rc = dem_side_start(arg, &cd, &d, &integ);
     for (int m = 0; m < CH_STEPS && !rc; m++) {
         if ((rc = couple_dem_recv(&cd, &d)))
             break;
@@ -601,17 +609,10 @@ static void test_channel_concurrent(void **st)
 /* Mismatched coupling intervals are refused with a message, not run. */
 static int dem_side_wrong_dt(void *arg)
 {
-    const char *name = arg;
-    struct dict *cdd = channel_dict(name), *tp = transport_dict();
     struct couple_dem cd;
     struct dem d;
     void *integ;
-    ch_grain(&d, &integ);
-    int rc = couple_dem_init(&cd, cdd, tp, d.gravity);
-    if (!rc)
-        rc = couple_dem_open(&cd, cdd, "/tmp", "demSolid", 2);
-    if (!rc)
-        rc = couple_dem_send(&cd, &d, 0, d.t);
+    int rc = dem_side_start(arg, &cd, &d, &integ);
     if (!rc)
         rc = couple_dem_recv(&cd, &d);
     if (!rc)
