@@ -46,7 +46,7 @@ run() {   # name tutorial dp
     set_key "$c/system/mpsSchemes" reNumberDensity 2.1
     set_key "$c/system/mpsSchemes" reGradient 2.1
     set_key "$c/system/mpsSchemes" reLaplacian 2.1
-    set_key "$c/system/mpsSolution" preconditioner "$PRECOND"
+    sed -i "s|^\(\s*preconditioner\) .*|\1 $PRECOND;|" "$c/system/mpsSolution"   # inside PPE { }
     local dt; dt=$(awk -v d=$dp 'BEGIN { printf "%.3g", 0.1 * d / 3 }')
     set_key "$c/system/controlDict" adjustTimeStep no
     set_key "$c/system/controlDict" deltaT "$dt"
@@ -55,6 +55,8 @@ run() {   # name tutorial dp
     sed -i '/^functions/,$d' "$c/system/controlDict"
     (cd "$c" && "$ROOT/bin/genParticles" > log.genParticles 2>&1 && "$ROOT/bin/mpsFluid" > log.mpsFluid 2>&1) \
         || { echo "$name FAILED (see $c)"; return; }
+    grep -q "^Selecting preconditioner $PRECOND " "$c/log.mpsFluid" \
+        || { echo "$name: the run did not use preconditioner $PRECOND (see $c)"; return; }
     awk -v name=$name -v bw=$BW -v tmp="$TMP" '
       /steps  / { st = $2; nb_builds = $6; gsub("[)]", "", nb_builds) }
       /particles  / { n = $2 }
