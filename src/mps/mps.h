@@ -86,6 +86,8 @@ struct mps_settings {
     double re_n, re_grad, re_lap;   /* radii in units of dp             */
     double gamma;                   /* PPE source mix (eq. 12)          */
     int gradient;                   /* MPS_GRAD_*: eq. (8) by default   */
+    int porous_symmetric;           /* PPE weight 2/(eps_i + eps_j)     */
+                                    /* instead of 1/eps_j (A.4 [P])     */
     int predictor;                  /* PPE at r* = r + dt u* (Koshizuka) */
     int clip_negative;              /* p < 0 set to 0 after the PPE     */
     double beta, alpha, fs_n_max;   /* eqs. 14, 16 and A0-07 (0.97)     */

@@ -6,6 +6,7 @@
  *   constant/g                    value (gx gy gz) [m/s^2] (or g (...))
  *   system/mpsSchemes             kernel, reNumberDensity, reGradient,
  *                                 reLaplacian [dp], pressureGradient,
+ *                                 porousLaplacian,
  *                                 sourceMix (gamma), freeSurface {...},
  *                                 collision, shifting (+ <name>Coeffs),
  *                                 dummyPressure, renumberInterval
@@ -125,6 +126,9 @@ static int read_schemes(const struct dict *d, struct mps_settings *S)
     TRY(read_radii(d, S));
     TRY(dict_get_word_or(d, "pressureGradient", grads, 0, &idx));
     S->gradient = idx;
+    static const char *const porous[] = { "neighbour", "symmetric", NULL };
+    TRY(dict_get_word_or(d, "porousLaplacian", porous, 0, &idx));
+    S->porous_symmetric = idx;
     TRY(dict_get_bool_or(d, "predictor", S->predictor, &S->predictor));
     TRY(dict_get_bool_or(d, "clipNegativePressure", S->clip_negative,
                          &S->clip_negative));

@@ -16,7 +16,11 @@
  *   A_ii = c sum_j w_ij/eps_j,  A_ij = -c w_ij/eps_j (j unknown),
  *   c = 2d/(n0 lambda),  b_i = -RHS_i.
  * With porosity the matrix becomes non-symmetric (A.4 [P]); select
- * bicgstab then. The warm start is the pressure of the previous step.
+ * bicgstab then. `porousLaplacian symmetric` takes the pair weight
+ * 2/(eps_i + eps_j) instead of 1/eps_j (METHODS.md A.4, the optional
+ * symmetric variant): A stays SPD and PCG applies, at half the cost per
+ * iteration of BiCGSTAB's two products. The two agree where eps varies
+ * slowly over r_e. The warm start is the pressure of the previous step.
  */
 #include <math.h>
 #include <omp.h>
@@ -81,6 +85,7 @@ static int assemble(struct mps_solver *s, int m)
     const struct neighbour_list *nl = &s->nl;
     const double *w = s->w_l, *ie = P->inv_eps;
     const double c = 2.0 * P->dim / (s->Ll.n0 * s->Ll.lambda);
+    const int sym = s->S.porous_symmetric;
     int64_t *rp = s->A.rowptr;
     /* pass 1: row lengths (diagonal + unknown neighbours) */
 #pragma omp parallel for schedule(static)
@@ -110,7 +115,11 @@ static int assemble(struct mps_solver *s, int m)
             int j = nl->j[k];
             if (w[k] == 0 || P->type[j] == MPS_DUMMY)
                 continue;
-            double a = c * w[k] * (ie ? ie[j] : 1.0);
+            /* inv_eps holds phi/eps: the pair weight 2/(eps_i + eps_j) in
+             * those terms is the harmonic mean of the two values */
+            double a = c * w[k] * (!ie ? 1.0
+                                   : sym ? 2.0 * ie[i] * ie[j] / (ie[i] + ie[j])
+                                         : ie[j]);
             diag += a;
             if (s->unk[j] >= 0) {
                 s->A.col[pos] = s->unk[j];
