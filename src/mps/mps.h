@@ -139,6 +139,10 @@ struct mps_solver {
     size_t cap_w;
     double *ustar, *grad, *lap, *div;
     uint8_t *rows_fluid, *rows_ppe;
+    uint8_t *rows_list;             /* rows the list builds (nl.rows)    */
+    int dummy_rows;                 /* dummies need rows: partner search
+                                       at start, dummyPressure
+                                       extrapolated                     */
     void *scratch;
     int32_t *perm, *inv;
     /* PPE */

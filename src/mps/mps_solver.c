@@ -73,6 +73,7 @@ static int alloc_work(struct mps_solver *s)
     s->div = sim_calloc(c, sizeof(double));
     s->rows_fluid = sim_calloc(c, 1);
     s->rows_ppe = sim_calloc(c, 1);
+    s->rows_list = sim_calloc(c, 1);
     s->scratch = sim_calloc(3 * c, sizeof(double));
     s->perm = sim_calloc(c, sizeof(int32_t));
     s->inv = sim_calloc(c, sizeof(int32_t));
@@ -82,11 +83,13 @@ static int alloc_work(struct mps_solver *s)
     s->A.rowptr = sim_calloc(c + 1, sizeof(int64_t));
     s->x_ref = sim_calloc(3 * c, sizeof(double));
     if (!s->ustar || !s->grad || !s->lap || !s->div || !s->rows_fluid
-        || !s->rows_ppe || !s->scratch || !s->perm || !s->inv || !s->unk
+        || !s->rows_ppe || !s->rows_list || !s->scratch || !s->perm || !s->inv || !s->unk
         || !s->b || !s->sol || !s->A.rowptr || !s->x_ref)
         return SIM_ERR_NOMEM;
     return SIM_OK;
 }
+
+static int build_list(struct mps_solver *s);
 
 int mps_solver_init(struct mps_solver *s, struct mps_particles *P,
                     const struct mps_settings *S, double dp,
@@ -119,6 +122,7 @@ int mps_solver_init(struct mps_solver *s, struct mps_particles *P,
         s->n_fluid0 += s->P.type[i] == MPS_FLUID;
     set_box(s);
     TRY(alloc_work(s));
+    s->dummy_rows = 1;
     TRY(mps_neighbours(s));
     /* Partners are searched over the whole list radius (skin included),
      * then the rows go back to the operators' radius. */
@@ -127,6 +131,14 @@ int mps_solver_init(struct mps_solver *s, struct mps_particles *P,
     TRY(mps_find_partners(s));
     s->nl.rc = s->re_max;
     neighbour_update(&s->nl, s->P.x);
+    /* From here on the dummies' own rows are read only by the
+     * extrapolated dummy pressure; without it they are left empty (the
+     * dummy layers are most of the particles of a tank), and the list is
+     * built again on the same grid, order unchanged. */
+    if (s->S.dummy_pressure != MPS_DUMMY_P_EXTRAPOLATED) {
+        s->dummy_rows = 0;
+        TRY(build_list(s));
+    }
     return SIM_OK;
 }
 
@@ -141,7 +153,7 @@ void mps_solver_free(struct mps_solver *s)
     if (s->w_l != s->w_n && s->w_l != s->w_g)
         free(s->w_l);
     free(s->ustar); free(s->grad); free(s->lap); free(s->div);
-    free(s->rows_fluid); free(s->rows_ppe); free(s->scratch);
+    free(s->rows_fluid); free(s->rows_ppe); free(s->rows_list); free(s->scratch);
     free(s->perm); free(s->inv); free(s->unk); free(s->b); free(s->sol);
     free(s->A.rowptr); free(s->A.col); free(s->A.val); free(s->x_ref);
     linsolve_free(s->ls);
@@ -209,6 +221,24 @@ void mps_request_rebuild(struct mps_solver *s)
     s->rebuild = 1;
 }
 
+/* The list (candidates within r_list) on the current grid, and weights. */
+static int build_list(struct mps_solver *s)
+{
+    struct mps_particles *P = &s->P;
+    s->nl.rows = NULL;
+    if (!s->dummy_rows) {
+        for (int i = 0; i < P->n; i++)
+            s->rows_list[i] = P->type[i] != MPS_DUMMY;
+        s->nl.rows = s->rows_list;
+    }
+    TRY(neighbour_build_skin(&s->nl, &s->grid, P->x, s->re_max,
+                             s->r_list - s->re_max));
+    memcpy(s->x_ref, P->x, sizeof *P->x * 3 * P->n);
+    TRY(grow_weights(s));
+    mps_weights(s);
+    return SIM_OK;
+}
+
 int mps_neighbours(struct mps_solver *s)
 {
     struct mps_particles *P = &s->P;
@@ -253,12 +283,7 @@ int mps_neighbours(struct mps_solver *s)
         TRY(cells_build(&s->grid, P->dim, P->x, P->n, cell_h, s->box_lo,
                         s->box_hi));
     }
-    TRY(neighbour_build_skin(&s->nl, &s->grid, P->x, s->re_max,
-                             s->r_list - s->re_max));
-    memcpy(s->x_ref, P->x, sizeof *P->x * 3 * P->n);
-    TRY(grow_weights(s));
-    mps_weights(s);
-    return SIM_OK;
+    return build_list(s);
 }
 
 void mps_weights(struct mps_solver *s)

@@ -195,7 +195,7 @@ static int scan_block(struct neighbour_list *nl, const struct cell_grid *g,
     int64_t m = 0;
     for (int i = a; i < b; i++) {
         nl->cstart[i] = 0;
-        if (g->cell_of[i] == g->ncell)
+        if (g->cell_of[i] == g->ncell || (nl->rows && !nl->rows[i]))
             continue;
         int64_t len;
         int nrun = runs(g, x + 3 * i, rc, rn, &len);

@@ -46,6 +46,10 @@ struct neighbour_list {
     int32_t **buf;
     size_t *cap_buf;
     int64_t *blk;     /* nbuf: entries of each thread's block           */
+    /* NULL, or one flag per particle read by the build: rows[i] == 0
+     * leaves row i empty (i still appears in the rows of others), for
+     * particles whose own sums nobody reads (MPS dummy layers). */
+    const uint8_t *rows;
 };
 
 /* Build from a grid of the same positions (g->h >= rc / 2 is required). */
