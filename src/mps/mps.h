@@ -140,9 +140,13 @@ struct mps_solver {
     double *ustar, *grad, *lap, *div;
     uint8_t *rows_fluid, *rows_ppe;
     uint8_t *rows_list;             /* rows the list builds (nl.rows)    */
-    int dummy_rows;                 /* dummies need rows: partner search
-                                       at start, dummyPressure
-                                       extrapolated                     */
+    int all_rows;                   /* every particle gets its row (the
+                                       first list: partners, wall depth) */
+    int dummy_rows;                 /* dummies near water get rows
+                                       (dummyPressure extrapolated)     */
+    uint8_t *cell_wet;              /* per cell of the grid: holds fluid */
+    size_t cap_cells;
+    int n_thin_walls;               /* found on the first list           */
     void *scratch;
     int32_t *perm, *inv;
     /* PPE */

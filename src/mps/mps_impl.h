@@ -24,4 +24,7 @@ void mps_dummy_pressure(struct mps_solver *s);
 /* Nearest wall particle of every dummy (walls never move). */
 int mps_find_partners(struct mps_solver *s);
 
+/* Wall particles with too few wall/dummy layers behind them for r_e. */
+int mps_thin_walls(const struct mps_solver *s);
+
 #endif

@@ -122,7 +122,7 @@ int mps_solver_init(struct mps_solver *s, struct mps_particles *P,
         s->n_fluid0 += s->P.type[i] == MPS_FLUID;
     set_box(s);
     TRY(alloc_work(s));
-    s->dummy_rows = 1;
+    s->all_rows = 1;
     TRY(mps_neighbours(s));
     /* Partners are searched over the whole list radius (skin included),
      * then the rows go back to the operators' radius. */
@@ -131,14 +131,13 @@ int mps_solver_init(struct mps_solver *s, struct mps_particles *P,
     TRY(mps_find_partners(s));
     s->nl.rc = s->re_max;
     neighbour_update(&s->nl, s->P.x);
-    /* From here on the dummies' own rows are read only by the
-     * extrapolated dummy pressure; without it they are left empty (the
-     * dummy layers are most of the particles of a tank), and the list is
-     * built again on the same grid, order unchanged. */
-    if (s->S.dummy_pressure != MPS_DUMMY_P_EXTRAPOLATED) {
-        s->dummy_rows = 0;
-        TRY(build_list(s));
-    }
+    s->n_thin_walls = mps_thin_walls(s);
+    /* From here on only particles that can see water within the list
+     * radius get rows (list_rows); the list is built again on the same
+     * grid, order unchanged. */
+    s->all_rows = 0;
+    s->dummy_rows = s->S.dummy_pressure == MPS_DUMMY_P_EXTRAPOLATED;
+    TRY(build_list(s));
     return SIM_OK;
 }
 
@@ -153,7 +152,8 @@ void mps_solver_free(struct mps_solver *s)
     if (s->w_l != s->w_n && s->w_l != s->w_g)
         free(s->w_l);
     free(s->ustar); free(s->grad); free(s->lap); free(s->div);
-    free(s->rows_fluid); free(s->rows_ppe); free(s->rows_list); free(s->scratch);
+    free(s->rows_fluid); free(s->rows_ppe); free(s->rows_list);
+    free(s->cell_wet); free(s->scratch);
     free(s->perm); free(s->inv); free(s->unk); free(s->b); free(s->sol);
     free(s->A.rowptr); free(s->A.col); free(s->A.val); free(s->x_ref);
     linsolve_free(s->ls);
@@ -221,14 +221,58 @@ void mps_request_rebuild(struct mps_solver *s)
     s->rebuild = 1;
 }
 
+/* Which particles get a row. The sums of a wall or dummy particle are read
+ * only where water is near: the PPE row and free-surface test of a wet
+ * wall particle (a dry one is p = 0 whatever its row), the extrapolated
+ * pressure of a wall or dummy particle (0 or the partner's without fluid
+ * neighbours). Dry walls and the dummy layers are most of a tank's
+ * particles. Fluid cannot come within r_e of a particle with no fluid
+ * within r_list before the list is rebuilt, and cells are r_list wide, so
+ * "a fluid particle in one of the 3^d cells around" is a safe test. */
+static int list_rows(struct mps_solver *s)
+{
+    const struct mps_particles *P = &s->P;
+    const struct cell_grid *g = &s->grid;
+    if ((size_t)g->ncell > s->cap_cells) {
+        uint8_t *c = sim_realloc(s->cell_wet, (size_t)g->ncell);
+        if (!c)
+            return SIM_ERR_NOMEM;
+        s->cell_wet = c;
+        s->cap_cells = (size_t)g->ncell;
+    }
+    memset(s->cell_wet, 0, (size_t)g->ncell);
+    for (int i = 0; i < P->n; i++)
+        if (P->type[i] == MPS_FLUID && g->cell_of[i] < g->ncell)
+            s->cell_wet[g->cell_of[i]] = 1;
+    const int nx = g->nc[0], ny = g->nc[1], nz = g->nc[2];
+    const int rz = P->dim == 3;
+#pragma omp parallel for schedule(static)
+    for (int i = 0; i < P->n; i++) {
+        int64_t c = g->cell_of[i];
+        uint8_t need = P->type[i] == MPS_FLUID;
+        if (!need && c < g->ncell
+            && (P->type[i] == MPS_WALL || s->dummy_rows)) {
+            int ix = (int)(c % nx), iy = (int)(c / nx % ny),
+                iz = (int)(c / ((int64_t)nx * ny));
+            for (int z = iz - rz; z <= iz + rz && !need; z++)
+                for (int y = iy - 1; y <= iy + 1 && !need; y++)
+                    for (int x = ix - 1; x <= ix + 1 && !need; x++)
+                        need = x >= 0 && x < nx && y >= 0 && y < ny
+                            && z >= 0 && z < nz
+                            && s->cell_wet[x + (int64_t)nx * (y + (int64_t)ny * z)];
+        }
+        s->rows_list[i] = need;
+    }
+    return SIM_OK;
+}
+
 /* The list (candidates within r_list) on the current grid, and weights. */
 static int build_list(struct mps_solver *s)
 {
     struct mps_particles *P = &s->P;
     s->nl.rows = NULL;
-    if (!s->dummy_rows) {
-        for (int i = 0; i < P->n; i++)
-            s->rows_list[i] = P->type[i] != MPS_DUMMY;
+    if (!s->all_rows) {
+        TRY(list_rows(s));
         s->nl.rows = s->rows_list;
     }
     TRY(neighbour_build_skin(&s->nl, &s->grid, P->x, s->re_max,

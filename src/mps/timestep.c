@@ -62,8 +62,9 @@ static double fluid_height(const struct mps_particles *P)
 }
 
 /* Wall particles whose wall+dummy layers behind them (along the normal)
- * are thinner than ceil(r_e/dp) - 1 layers. */
-static int thin_walls(const struct mps_solver *s)
+ * are thinner than ceil(r_e/dp) - 1 layers (on the list of the start,
+ * where every wall particle has its row). */
+int mps_thin_walls(const struct mps_solver *s)
 {
     const struct mps_particles *P = &s->P;
     const struct neighbour_list *nl = &s->nl;
@@ -128,7 +129,7 @@ int mps_check_setup(const struct mps_solver *s, double dt, int adjustable,
             log_warn("deltaT %g s gives a Courant number %.3g > maxCo %g at "
                      "the free-fall speed", dt, co, max_co);
     }
-    int bad = thin_walls(s);
+    int bad = s->n_thin_walls;
     if (bad)
         log_warn("%d wall particle(s) have fewer than %d wall/dummy layers "
                  "behind them: the number density near them is too low "

@@ -6,7 +6,11 @@
 #
 #   test/bench/mpsDemTable2.sh [STEPS] [DP...]     (default 20 steps, all dp)
 #
-# Both programs run in tandem, one OpenMP thread each (two cores). From
+# Both programs run in tandem, THREADS OpenMP threads each (default 2: in
+# the sequential scheme they take turns, so each has the two cores while it
+# computes; the waiting side sleeps on a futex). PPE=symmetric runs the
+# PPE as porousLaplacian symmetric + pcg (METHODS.md A.4's SPD variant)
+# instead of the tutorial's 1/eps_j weights + bicgstab. From
 # log.mpsFluid: the MPS step's own timers (time per particle-step x
 # particles), the time in the coupling glue G (pairs, porosity,
 # interpolation, reaction) and the time spent waiting for demSolid D (its
@@ -22,10 +26,12 @@ steps=${1:-20}; shift
 dps=("$@"); [ ${#dps[@]} -eq 0 ] && dps=(0.002 0.0027 0.003)
 TMP="$(mktemp -d)"
 trap 'rm -rf "$TMP"' EXIT
-export OMP_NUM_THREADS=1
+export OMP_NUM_THREADS=${THREADS:-2}
+PPE=${PPE:-neighbour}
+echo "# $(date -u '+%F %T UTC'); $OMP_NUM_THREADS threads per program; load average $(cut -d' ' -f1-3 /proc/loadavg); PPE weights $PPE; $steps steps"
 declare -A paper_mps=([0.002]=4.40082 [0.0027]=1.83128 [0.003]=1.29677)
 declare -A paper_dem=([0.002]=3.36281 [0.0027]=3.25171 [0.003]=3.24867)
-printf "%-8s %9s %7s | %12s %12s %10s | %9s %9s | %8s %8s\n" dp particles grains \
+printf "%-8s %9s %7s %7s | %12s %12s %10s | %9s %9s | %8s %8s\n" dp particles fluid grains \
        "MPS [s]" "DEM+cpl [s]" "total [s]" "paper MPS" "paper DEM" "x MPS" "x DEM"
 for dp in "${dps[@]}"; do
     c="$TMP/dp$dp"
@@ -33,6 +39,10 @@ for dp in "${dps[@]}"; do
     sed -i "s/^dp .*/dp           $dp;/" "$c/system/particleDict"
     sed -i "s/^endTime .*/endTime $(awk -v n="$steps" 'BEGIN { print n * 1e-4 }');/; s/^writeInterval .*/writeInterval 1;/" "$c/system/controlDict"
     echo "channel mpsdem-table2-$$;" >> "$c/system/couplingDict"
+    if [ "$PPE" = symmetric ]; then
+        echo "porousLaplacian symmetric;" >> "$c/system/mpsSchemes"
+        sed -i 's|^\(\s*solver\) .*|\1 pcg;|' "$c/system/mpsSolution"
+    fi
     (cd "$c" && "$ROOT/bin/genParticles" > log.genParticles 2>&1) || { echo "dp $dp: genParticles failed"; continue; }
     (cd "$c" && "$MPSFLUID" > log.mpsFluid 2>&1) &
     pf=$!
@@ -40,11 +50,23 @@ for dp in "${dps[@]}"; do
     wait $pf || { echo "dp $dp: mpsFluid failed: $(grep -A2 FATAL "$c/log.mpsFluid" | tr '\n' ' ')"; continue; }
     np=$(awk '/^MPS particles:/ { print $3 }' "$c/log.genParticles")
     ng=$(awk '/^MPS particles:/ { print $NF }' "$c/log.genParticles")
-    awk -v dp="$dp" -v np="$np" -v ng="$ng" -v pm="${paper_mps[$dp]:-0}" -v pd="${paper_dem[$dp]:-0}" '
+    # fluid particles: the "fluid" column of genParticles' region table
+    nf=$(awk '/ patch +region +type/ { t = 1; next } t && $1 ~ /^[0-9]+$/ { f += $5 } t && $1 !~ /^[0-9]+$/ { t = 0 } END { print f }' "$c/log.genParticles")
+    awk -v dp="$dp" -v np="$np" -v nf="$nf" -v ng="$ng" -v pm="${paper_mps[$dp]:-0}" -v pd="${paper_dem[$dp]:-0}" '
         /^Coupling: [0-9]+ exchanges/ { n = $2; g = $4; d = $9 }
         /^    particles / { npart = $2 }
         /time per particle-step \[us\]/ { tot = $NF }
         END { m = tot * 1e-6 * npart; c = (g + d) / n
-              printf "%-8s %9s %7s | %12.4f %12.4f %10.4f | %9.3f %9.3f | %8.1f %8.1f\n",
-                     dp, np, ng, m, c, m + c, pm, pd, (pm > 0 ? pm / m : 0), (pd > 0 ? pd / c : 0) }' "$c/log.mpsFluid"
-done
+              printf "%-8s %9s %7s %7s | %12.4f %12.4f %10.4f | %9.3f %9.3f | %8.1f %8.1f\n",
+                     dp, np, nf, ng, m, c, m + c, pm, pd, (pm > 0 ? pm / m : 0), (pd > 0 ? pd / c : 0) }' "$c/log.mpsFluid"
+done | tee "$TMP/table"
+# E1-24 (METHODS.md): MPS time per step ~ fluid particle count, DEM time
+# independent of dp, each within 25 %, against the coarsest row
+awk '$1 ~ /^[0-9.]+$/ { n++; dp[n] = $1; np[n] = $2; nf[n] = $3; m[n] = $6; c[n] = $7 }
+     END { if (n < 2) exit
+           r = 1; for (i = 2; i <= n; i++) if (dp[i] > dp[r]) r = i
+           print "E1-24, against dp " dp[r] ": (MPS time ratio)/(fluid count ratio) - 1, the same against all particles, DEM+coupling time ratio - 1"
+           for (i = 1; i <= n; i++) if (i != r)
+               printf "  dp %-7s %+6.1f %%   %+6.1f %%   %+6.1f %%\n", dp[i],
+                      100 * ((m[i] / m[r]) / (nf[i] / nf[r]) - 1),
+                      100 * ((m[i] / m[r]) / (np[i] / np[r]) - 1), 100 * (c[i] / c[r] - 1) }' "$TMP/table"
