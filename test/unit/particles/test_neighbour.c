@@ -1,7 +1,8 @@
 /* test_neighbour.c — cell lists and CSR neighbour lists against the O(n^2)
  * reference on random sets (2-D and 3-D, with particles outside the box and
  * NaN positions; cells of the cut-off and of half of it; a Verlet list with
- * a skin updated after moves), and cell-order renumbering. */
+ * a skin updated after moves; rows left empty by a mask), and cell-order
+ * renumbering. */
 #include <setjmp.h>
 #include <stdarg.h>
 #include <stddef.h>
@@ -119,6 +120,56 @@ static void skin_case(int dim, int n, double rc, double skin, double h)
     free(x);
 }
 
+/* Row mask: masked rows are empty, before and after an update; the other
+ * rows are those of the unmasked list, masked particles included in them. */
+static void test_row_mask(void **st)
+{
+    (void)st;
+    const int n = 2000;
+    const double rc = 0.08, skin = 0.02;
+    double *x = calloc(3 * (size_t)n, sizeof *x);
+    uint8_t *rows = malloc((size_t)n);
+    for (int i = 0; i < n; i++) {
+        for (int k = 0; k < 3; k++)
+            x[3 * i + k] = urand();
+        rows[i] = (uint8_t)(i % 3 != 0);
+    }
+    double lo[3] = { 0, 0, 0 }, hi[3] = { 1, 1, 1 };
+    struct cell_grid g = { 0 };
+    struct neighbour_list all = { 0 }, some = { 0 };
+    assert_int_equal(cells_build(&g, 3, x, n, rc + skin, lo, hi), 0);
+    assert_int_equal(neighbour_build_skin(&all, &g, x, rc, skin), 0);
+    some.rows = rows;
+    assert_int_equal(neighbour_build_skin(&some, &g, x, rc, skin), 0);
+    for (int pass = 0; pass < 2; pass++) {
+        int64_t seen_masked = 0;
+        for (int i = 0; i < n; i++) {
+            int64_t len = some.start[i + 1] - some.start[i];
+            if (!rows[i]) {
+                assert_int_equal(len, 0);
+                continue;
+            }
+            assert_int_equal(len, all.start[i + 1] - all.start[i]);
+            for (int64_t k = 0; k < len; k++) {
+                assert_int_equal(some.j[some.start[i] + k],
+                                 all.j[all.start[i] + k]);
+                seen_masked += !rows[some.j[some.start[i] + k]];
+            }
+        }
+        assert_true(seen_masked > 0);
+        for (int i = 0; i < n; i++)   /* move by < skin/2, then update */
+            for (int k = 0; k < 3; k++)
+                x[3 * i + k] += 0.004 * (2 * urand() - 1);
+        neighbour_update(&all, x);
+        neighbour_update(&some, x);
+    }
+    cells_free(&g);
+    neighbour_free(&all);
+    neighbour_free(&some);
+    free(rows);
+    free(x);
+}
+
 static void test_skin_3d(void **s) { (void)s; skin_case(3, 3000, 0.07, 0.03, 0.05); }
 static void test_skin_2d(void **s) { (void)s; skin_case(2, 3000, 0.05, 0.02, 0.07); }
 static void test_random_3d(void **s) { (void)s; random_case(3, 3000, 0.07, 0.07, 1); }
@@ -184,6 +235,7 @@ int main(void)
         cmocka_unit_test(test_random_bbox),
         cmocka_unit_test(test_bad_cutoff),
         cmocka_unit_test(test_renumber),
+        cmocka_unit_test(test_row_mask),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
