@@ -40,6 +40,7 @@ for dp in "${dps[@]}"; do
     sed -i "s/^endTime .*/endTime $(awk -v n="$steps" 'BEGIN { print n * 1e-4 }');/; s/^writeInterval .*/writeInterval 1;/" "$c/system/controlDict"
     echo "channel mpsdem-table2-$$;" >> "$c/system/couplingDict"
     if [ "$PPE" = symmetric ]; then
+        sed -i '/^porousLaplacian /d' "$c/system/mpsSchemes"
         echo "porousLaplacian symmetric;" >> "$c/system/mpsSchemes"
         sed -i 's|^\(\s*solver\) .*|\1 pcg;|' "$c/system/mpsSolution"
     fi
