@@ -83,8 +83,8 @@ static int alloc_work(struct mps_solver *s)
     s->A.rowptr = sim_calloc(c + 1, sizeof(int64_t));
     s->x_ref = sim_calloc(3 * c, sizeof(double));
     if (!s->ustar || !s->grad || !s->lap || !s->div || !s->rows_fluid
-        || !s->rows_ppe || !s->rows_list || !s->scratch || !s->perm || !s->inv || !s->unk
-        || !s->b || !s->sol || !s->A.rowptr || !s->x_ref)
+        || !s->rows_ppe || !s->rows_list || !s->scratch || !s->perm
+        || !s->inv || !s->unk || !s->b || !s->sol || !s->A.rowptr || !s->x_ref)
         return SIM_ERR_NOMEM;
     return SIM_OK;
 }
@@ -259,7 +259,7 @@ static int list_rows(struct mps_solver *s)
                     for (int x = ix - 1; x <= ix + 1 && !need; x++)
                         need = x >= 0 && x < nx && y >= 0 && y < ny
                             && z >= 0 && z < nz
-                            && s->cell_wet[x + (int64_t)nx * (y + (int64_t)ny * z)];
+                            && s->cell_wet[x + nx * (y + ny * (int64_t)z)];
         }
         s->rows_list[i] = need;
     }

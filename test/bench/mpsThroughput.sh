@@ -11,7 +11,7 @@
 #     correction; nonPPE = all but the PPE solve (the target),
 #   CG iterations per step, ns per CG iteration per row,
 #   the CG's bytes per row-iteration and its share of a bandwidth bound.
-# The PPE runs Jacobi-PCG (PRECOND=ic0 etc. to change it; the tutorials
+# The PPE runs Jacobi-PCG (PRECOND=ic0 etc. to change it; the 2-D tutorials
 # use IC(0)) because its bytes are known: the fast path of
 # src/linsolve/solver_pcg.c streams, per iteration and row,
 #   B = 12 nnz/row (CSR values + columns) + 8 x 13 vector streams
