@@ -14,7 +14,7 @@
 set -e
 CASE=${1:-.}
 SHIFT=${2:-0}
-ROOT="$(cd "$(dirname "$0")/../../../.." && pwd)"
+ROOT="${MPSDEM_DIR:-$(cd "$(dirname "$0")/../../../.." && pwd)}"   # MPSDEM_DIR for a copied case
 DATA="$ROOT/../shared/data/martin_moyce_1952"
 A=0.05715
 G=9.81

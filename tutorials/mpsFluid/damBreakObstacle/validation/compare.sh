@@ -8,7 +8,7 @@
 #                 time [s], simulated and measured
 set -e
 CASE=${1:-.}
-ROOT="$(cd "$(dirname "$0")/../../../.." && pwd)"
+ROOT="${MPSDEM_DIR:-$(cd "$(dirname "$0")/../../../.." && pwd)}"   # MPSDEM_DIR for a copied case
 EXP="$ROOT/../shared/data/kleefsman_spheric2/spheric_test2_marin_exp.csv"
 # a restarted run writes postProcessing/<name>/<startTime>/: join them in time order
 TMP="$(mktemp -d)"; trap 'rm -rf "$TMP"' EXIT

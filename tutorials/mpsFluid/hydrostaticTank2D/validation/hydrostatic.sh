@@ -10,7 +10,7 @@
 set -e
 CASE=${1:-.}
 WIN=${2:-0.2}
-ROOT="$(cd "$(dirname "$0")/../../../.." && pwd)"
+ROOT="${MPSDEM_DIR:-$(cd "$(dirname "$0")/../../../.." && pwd)}"   # MPSDEM_DIR for a copied case
 VTU="$ROOT/bin/vtuInfo"
 cd "$CASE"
 dim=$(awk '/^dimension/ {gsub(";","",$2); print $2}' constant/particlePatches)
