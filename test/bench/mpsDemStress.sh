@@ -310,52 +310,69 @@ section_b()
 }
 
 # ---- (c) largest fixed deltaT on the root case ------------------------------
+# One run of the root case with model $1 and deltaT $2: prints its row and
+# sets rung_ok (yes/no); the first run of a model sets the reference fronts.
+rung()
+{
+    local model=$1 dt=$2 c r
+    c="$TMP/c$model.$dt"
+    mkdir -p "$c"
+    cp -r "$ROOT"/system "$ROOT"/constant "$c/"
+    sed -i "s/^model .*/model $model;/; s/^timeout .*/timeout 60;/" "$c/system/couplingDict"
+    sed -i "s/^deltaT .*/deltaT $dt;/; s/^endTime .*/endTime $end;/" "$c/system/controlDict"
+    sed -i '/^functions/,/^{/ s/^{/{\n    volume { type volume; cloud fluid; writeControl timeStep; writeInterval 5; }\n    grains { type cloudInfo; cloud dem; writeControl timeStep; writeInterval 5; }/' \
+        "$c/system/controlDict"
+    local t0=$SECONDS
+    r=$(run_case "$c" 1200)
+    [ $model = A ] && [ -z "$xw0" ] && echo "  $(grep '^MPS particles' "$c/log.genParticles")"
+    local wall=$((SECONDS - t0)) h="? ? ? ?" dv="?" xw="?" xs="?" dxw="?" dxs="?"
+    rung_ok=no
+    if [ "$r" = ok ]; then
+        h=$(health "$c" 0.2)
+        dv=$(awk '!/^#/ { v = $4 } END { printf "%.2g", v }' "$(pp "$c" volume volume)")
+        xw=$(awk '!/^#/ { v = $2 } END { printf "%.4f", v }' "$(pp "$c" fluidFront front)")
+        xs=$(awk '!/^#/ { v = $2 } END { printf "%.4f", v }' "$(pp "$c" sedimentFront front)")
+        [ -n "$xw0" ] || { xw0=$xw; xs0=$xs; }
+        dxw=$(awk -v a=$xw -v b=$xw0 'BEGIN { printf "%+.4f", a - b }')
+        dxs=$(awk -v a=$xs -v b=$xs0 'BEGIN { printf "%+.4f", a - b }')
+        read -r nan esc rem out <<< "$h"
+        [ "$nan $esc $rem" = "0 0 0" ] \
+            && awk -v d="$dv" 'BEGIN { exit !(d <= 0.01 && d >= -0.01) }' && rung_ok=yes
+    fi
+    local co
+    co=$(awk -v dt=$dt 'BEGIN { printf "%.2f", 2 * sqrt(9.81 * 0.1) * dt / 0.005 }')
+    printf "  %-5s %9s %7s %6s %4s %4s %4s %7s %8s %8s %8s %8s  %s\n" $model $dt $wall $co \
+        $(echo "$h" | cut -d' ' -f1-3) "$dv" "$xw" "$dxw" "$xs" "$dxs" $rung_ok
+    [ "$r" = ok ] || echo "        $r" | cut -c1-150
+}
+
 section_c()
 {
-    local end=0.2 model dt c r
-    # steps that divide the write interval 0.05 s (and the end time)
-    local -a ladder=(4e-4 6.25e-4 1e-3 1.25e-3 1.5625e-3 2e-3 2.5e-3 3.125e-3 5e-3 6.25e-3 1e-2)
+    local end=0.2 model dt
+    # steps that divide the write interval 0.05 s (and the end time): the
+    # ladder in steps per 0.05 s, then bisection on that count between the
+    # last rung that survived and the first that failed
+    local -a ladder=(125 80 50 40 32 25 20 16 10 8 5)
     [ $quick = 1 ] && end=0.05
     echo
-    echo "(c) root case (3-D two-phase dam break, system/ and constant/ of the repository) to $end s: deltaT ladder"
+    echo "(c) root case (3-D two-phase dam break, system/ and constant/ of the repository) to $end s: deltaT ladder, then bisection"
     echo "  Co_est = 2 sqrt(g 0.1 m) deltaT / dp; x_water, x_sed: fronts (function objects) at the end, and"
     echo "  their difference from the first rung's (the smallest step) [m]"
     printf "  %-5s %9s %7s %6s %4s %4s %4s %7s %8s %8s %8s %8s  %s\n" model deltaT wall_s Co_est nan esc rem dV x_water dx_water x_sed dx_sed survives
     for model in A B; do
-        local best=none fail1="" xw0="" xs0=""
-        for dt in "${ladder[@]}"; do
-            c="$TMP/c$model.$dt"
-            mkdir -p "$c"
-            cp -r "$ROOT"/system "$ROOT"/constant "$c/"
-            sed -i "s/^model .*/model $model;/; s/^timeout .*/timeout 60;/" "$c/system/couplingDict"
-            sed -i "s/^deltaT .*/deltaT $dt;/; s/^endTime .*/endTime $end;/" "$c/system/controlDict"
-            sed -i '/^functions/,/^{/ s/^{/{\n    volume { type volume; cloud fluid; writeControl timeStep; writeInterval 5; }\n    grains { type cloudInfo; cloud dem; writeControl timeStep; writeInterval 5; }/' \
-                "$c/system/controlDict"
-            local t0=$SECONDS
-            r=$(run_case "$c" 1200)
-            [ $model = A ] && [ $dt = 4e-4 ] && echo "  $(grep '^MPS particles' "$c/log.genParticles")"
-            local wall=$((SECONDS - t0)) s=no h="? ? ? ?" dv="?" xw="?" xs="?" dxw="?" dxs="?"
-            if [ "$r" = ok ]; then
-                h=$(health "$c" 0.2)
-                dv=$(awk '!/^#/ { v = $4 } END { printf "%.2g", v }' "$(pp "$c" volume volume)")
-                xw=$(awk '!/^#/ { v = $2 } END { printf "%.4f", v }' "$(pp "$c" fluidFront front)")
-                xs=$(awk '!/^#/ { v = $2 } END { printf "%.4f", v }' "$(pp "$c" sedimentFront front)")
-                [ -n "$xw0" ] || { xw0=$xw; xs0=$xs; }
-                dxw=$(awk -v a=$xw -v b=$xw0 'BEGIN { printf "%+.4f", a - b }')
-                dxs=$(awk -v a=$xs -v b=$xs0 'BEGIN { printf "%+.4f", a - b }')
-                read -r nan esc rem out <<< "$h"
-                [ "$nan $esc $rem" = "0 0 0" ] \
-                    && awk -v d="$dv" 'BEGIN { exit !(d <= 0.01 && d >= -0.01) }' && s=yes
-            fi
-            local co
-            co=$(awk -v dt=$dt 'BEGIN { printf "%.2f", 2 * sqrt(9.81 * 0.1) * dt / 0.005 }')
-            printf "  %-5s %9s %7s %6s %4s %4s %4s %7s %8s %8s %8s %8s  %s\n" $model $dt $wall $co \
-                $(echo "$h" | cut -d' ' -f1-3) "$dv" "$xw" "$dxw" "$xs" "$dxs" $s
-            [ "$r" = ok ] || echo "        $r" | cut -c1-150
-            [ $s = yes ] || { fail1=$dt; break; }
-            best=$dt
+        local ok_n="" fail_n="" xw0="" xs0="" n
+        for n in "${ladder[@]}"; do
+            rung $model "$(awk -v n=$n 'BEGIN { printf "%.6g", 0.05 / n }')"
+            [ $rung_ok = yes ] || { fail_n=$n; break; }
+            ok_n=$n
         done
-        echo "  Model $model: largest deltaT that survives: $best s (first failure: ${fail1:-none up to ${ladder[-1]}})"
+        while [ -n "$ok_n" ] && [ -n "$fail_n" ] && [ $((ok_n - fail_n)) -gt 1 ]; do
+            n=$(((ok_n + fail_n) / 2))
+            rung $model "$(awk -v n=$n 'BEGIN { printf "%.6g", 0.05 / n }')"
+            if [ $rung_ok = yes ]; then ok_n=$n; else fail_n=$n; fi
+        done
+        echo "  Model $model: largest deltaT that survives: $([ -n "$ok_n" ] && awk -v n=$ok_n 'BEGIN { printf "%.6g", 0.05 / n }' || echo none) s" \
+             "(smallest that fails: $([ -n "$fail_n" ] && awk -v n=$fail_n 'BEGIN { printf "%.6g", 0.05 / n }' || echo none))"
     done
 }
 
