@@ -17,7 +17,8 @@
 # sub-steps, sequential scheme) over N steps: DEM + coupling = (G+D)/N.
 # The bed is the paper's: 7425 touching beads (the tutorial's fluid
 # particles hold eps dp^3 of water there, grainVolume scale). The first
-# steps are the release of the column, not the paper's mid-run steps.
+# steps are the release of the column, not the paper's mid-run steps
+# (FROM= below measures mid-run).
 # MPSFLUID / DEMSOLID override the programs (default bin/).
 ROOT="$(cd "$(dirname "$0")/../.." && pwd)"
 MPSFLUID=${MPSFLUID:-$ROOT/bin/mpsFluid}
@@ -28,23 +29,36 @@ TMP="$(mktemp -d)"
 trap 'rm -rf "$TMP"' EXIT
 export OMP_NUM_THREADS=${THREADS:-2}
 PPE=${PPE:-neighbour}
-echo "# $(date -u '+%F %T UTC'); $OMP_NUM_THREADS threads per program; load average $(cut -d' ' -f1-3 /proc/loadavg); PPE weights $PPE; $steps steps"
+# FROM=DIR: steps from the FROM_TIME (default 0.1 s) state of finished
+# runs DIR/modelB-dp<dp> (e.g. a copy of the tutorial after
+# ./Allrun B 0.002 B 0.0027 B 0.003) instead of the release
+FROM=${FROM:-}
+FROM_TIME=${FROM_TIME:-0.1}
+echo "# $(date -u '+%F %T UTC'); $OMP_NUM_THREADS threads per program; load average $(cut -d' ' -f1-3 /proc/loadavg); PPE weights $PPE; $steps steps${FROM:+ from $FROM_TIME s of $FROM}"
 declare -A paper_mps=([0.002]=4.40082 [0.0027]=1.83128 [0.003]=1.29677)
 declare -A paper_dem=([0.002]=3.36281 [0.0027]=3.25171 [0.003]=3.24867)
 printf "%-8s %9s %7s %7s | %12s %12s %10s | %9s %9s | %8s %8s\n" dp particles fluid grains \
        "MPS [s]" "DEM+cpl [s]" "total [s]" "paper MPS" "paper DEM" "x MPS" "x DEM"
 for dp in "${dps[@]}"; do
     c="$TMP/dp$dp"
-    cp -r "$ROOT/tutorials/mpsDem/twoPhaseDamBreak" "$c"
-    sed -i "s/^dp .*/dp           $dp;/" "$c/system/particleDict"
-    sed -i "s/^endTime .*/endTime $(awk -v n="$steps" 'BEGIN { print n * 1e-4 }');/; s/^writeInterval .*/writeInterval 1;/" "$c/system/controlDict"
+    if [ -n "$FROM" ]; then   # mid-run: restart from $FROM/modelB-dp<dp>/<FROM_TIME>
+        src="$FROM/modelB-dp$dp"
+        [ -d "$src/$FROM_TIME" ] || { echo "dp $dp: no $src/$FROM_TIME"; continue; }
+        mkdir -p "$c" && cp -r "$src/constant" "$src/system" "$src/$FROM_TIME" "$c/"
+        cp "$src/log.genParticles" "$c/"
+        sed -i "s/^startFrom .*/startFrom latestTime;/; s/^endTime .*/endTime $(awk -v t="$FROM_TIME" -v n="$steps" 'BEGIN { print t + n * 1e-4 }');/; s/^writeInterval .*/writeInterval 1;/" "$c/system/controlDict"
+    else
+        cp -r "$ROOT/tutorials/mpsDem/twoPhaseDamBreak" "$c"
+        sed -i "s/^dp .*/dp           $dp;/" "$c/system/particleDict"
+        sed -i "s/^endTime .*/endTime $(awk -v n="$steps" 'BEGIN { print n * 1e-4 }');/; s/^writeInterval .*/writeInterval 1;/" "$c/system/controlDict"
+    fi
     echo "channel mpsdem-table2-$$;" >> "$c/system/couplingDict"
     if [ "$PPE" = symmetric ]; then
         sed -i '/^porousLaplacian /d' "$c/system/mpsSchemes"
         echo "porousLaplacian symmetric;" >> "$c/system/mpsSchemes"
         sed -i 's|^\(\s*solver\) .*|\1 pcg;|' "$c/system/mpsSolution"
     fi
-    (cd "$c" && "$ROOT/bin/genParticles" > log.genParticles 2>&1) || { echo "dp $dp: genParticles failed"; continue; }
+    [ -n "$FROM" ] || (cd "$c" && "$ROOT/bin/genParticles" > log.genParticles 2>&1) || { echo "dp $dp: genParticles failed"; continue; }
     (cd "$c" && "$MPSFLUID" > log.mpsFluid 2>&1) &
     pf=$!
     (cd "$c" && "$DEMSOLID" > log.demSolid 2>&1)
