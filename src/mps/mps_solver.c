@@ -248,19 +248,16 @@ static int list_rows(struct mps_solver *s)
     const int rz = P->dim == 3;
 #pragma omp parallel for schedule(static)
     for (int i = 0; i < P->n; i++) {
-        int64_t c = g->cell_of[i];
+        int ic[3];
         uint8_t need = P->type[i] == MPS_FLUID;
-        if (!need && c < g->ncell
-            && (P->type[i] == MPS_WALL || s->dummy_rows)) {
-            int ix = (int)(c % nx), iy = (int)(c / nx % ny),
-                iz = (int)(c / ((int64_t)nx * ny));
-            for (int z = iz - rz; z <= iz + rz && !need; z++)
-                for (int y = iy - 1; y <= iy + 1 && !need; y++)
-                    for (int x = ix - 1; x <= ix + 1 && !need; x++)
+        if (!need && (P->type[i] == MPS_WALL || s->dummy_rows)
+            && cells_locate(g, P->x + 3 * i, ic))
+            for (int z = ic[2] - rz; z <= ic[2] + rz && !need; z++)
+                for (int y = ic[1] - 1; y <= ic[1] + 1 && !need; y++)
+                    for (int x = ic[0] - 1; x <= ic[0] + 1 && !need; x++)
                         need = x >= 0 && x < nx && y >= 0 && y < ny
                             && z >= 0 && z < nz
                             && s->cell_wet[x + nx * (y + ny * (int64_t)z)];
-        }
         s->rows_list[i] = need;
     }
     return SIM_OK;

@@ -38,7 +38,8 @@ gcc -O2 -fopenmp "$ROOT/test/bench/mps_stream.c" -o "$TMP/stream" || exit 1
 BW=$("$TMP/stream" | awk '{ print $2 }')
 echo "# $(date -u '+%F %T UTC'); threads ${OMP_NUM_THREADS:-$(nproc)}; load average $(cut -d' ' -f1-3 /proc/loadavg); PPE pcg/$PRECOND; $STEPS steps"
 echo "# DRAM bandwidth (triad, 768 MB): $BW GB/s"
-set_key() { sed -i "s|^\($2\) .*|\1 $3;|" "$1"; }
+# keys at any indentation (preconditioner sits inside PPE { })
+set_key() { sed -i "s|^\(\s*$2\) .*|\1 $3;|" "$1"; }
 run() {   # name tutorial dp
     local name=$1 tut=$2 dp=$3 c="$TMP/$1"
     cp -r "$ROOT/tutorials/mpsFluid/$tut" "$c"
@@ -46,7 +47,7 @@ run() {   # name tutorial dp
     set_key "$c/system/mpsSchemes" reNumberDensity 2.1
     set_key "$c/system/mpsSchemes" reGradient 2.1
     set_key "$c/system/mpsSchemes" reLaplacian 2.1
-    sed -i "s|^\(\s*preconditioner\) .*|\1 $PRECOND;|" "$c/system/mpsSolution"   # inside PPE { }
+    set_key "$c/system/mpsSolution" preconditioner "$PRECOND"
     local dt; dt=$(awk -v d=$dp 'BEGIN { printf "%.3g", 0.1 * d / 3 }')
     set_key "$c/system/controlDict" adjustTimeStep no
     set_key "$c/system/controlDict" deltaT "$dt"

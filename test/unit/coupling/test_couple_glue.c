@@ -43,41 +43,7 @@ static const double G = 9.81, RHO_F = 1000.0;
 static void build_tank(struct mps_particles *P, int nx, int ny, int nz,
                        double dp)
 {
-    const int L = 3;
-    int cap = (nx + 2 * L) * (ny + 2 * L) * (nz + 3 + L), n = 0;
-    assert_int_equal(mps_particles_alloc(P, cap, 3), 0);
-    for (int i = -L; i < nx + L; i++)
-        for (int j = -L; j < ny + L; j++)
-            for (int k = -L; k < nz + 3; k++) {
-                int di = i < 0 ? -i : i >= nx ? i - nx + 1 : 0;
-                int dj = j < 0 ? -j : j >= ny ? j - ny + 1 : 0;
-                int dk = k < 0 ? -k : 0;
-                int depth = di > dj ? di : dj;
-                depth = depth > dk ? depth : dk;
-                int fluid = depth == 0 && k < nz;
-                if (depth == 0 && !fluid)
-                    continue;
-                double *x = P->x + 3 * n;
-                x[0] = (i + 0.5) * dp;
-                x[1] = (j + 0.5) * dp;
-                x[2] = (k + 0.5) * dp;
-                P->type[n] = fluid ? MPS_FLUID
-                           : depth == 1 ? MPS_WALL : MPS_DUMMY;
-                P->patch[n] = fluid ? -1 : 0;
-                if (!fluid) {
-                    double nv[3] = { i < 0 ? -1 : i >= nx ? 1 : 0,
-                                     j < 0 ? -1 : j >= ny ? 1 : 0,
-                                     k < 0 ? -1 : 0 };
-                    double l = sqrt(nv[0] * nv[0] + nv[1] * nv[1]
-                                    + nv[2] * nv[2]);
-                    for (int c = 0; c < 3; c++)
-                        P->normal[3 * n + c] = nv[c] / l;
-                }
-                n++;
-            }
-    P->n = n;
-    for (int i = 0; i < n; i++)
-        P->id[i] = i;
+    mps_test_tank(P, 3, (const int[3]){ nx, ny, nz }, 3, 3, dp);
 }
 
 /* 2-D: fluid nx x ny cells in the x-y plane, gravity along -y. */
