@@ -131,28 +131,6 @@ int csr_validate(const struct csr_matrix *A, double *diag)
                      "diagonal", row, d);
 }
 
-/* Row i of A times x. Four partial sums: with one, every multiply-add
- * waits for the previous one (4 cycles of add latency per entry), which
- * made the SpMV latency-bound rather than memory-bound on PPE rows of
- * 13-120 entries. */
-static inline double row_dot(const int64_t *restrict rp,
-                             const int32_t *restrict col,
-                             const double *restrict val,
-                             const double *restrict x, int i)
-{
-    double s0 = 0.0, s1 = 0.0, s2 = 0.0, s3 = 0.0;
-    int64_t k = rp[i], e = rp[i + 1];
-    for (; k + 3 < e; k += 4) {
-        s0 += val[k] * x[col[k]];
-        s1 += val[k + 1] * x[col[k + 1]];
-        s2 += val[k + 2] * x[col[k + 2]];
-        s3 += val[k + 3] * x[col[k + 3]];
-    }
-    for (; k < e; k++)
-        s0 += val[k] * x[col[k]];
-    return (s0 + s1) + (s2 + s3);
-}
-
 void csr_spmv(const struct csr_matrix *A, const double *x, double *y)
 {
     const int64_t *rp = A->rowptr;
@@ -160,7 +138,7 @@ void csr_spmv(const struct csr_matrix *A, const double *x, double *y)
     const double *val = A->val;
 #pragma omp parallel for schedule(static) if (LS_PAR(A->n))
     for (int i = 0; i < A->n; i++)
-        y[i] = row_dot(rp, col, val, x, i);
+        y[i] = csr_row_dot(rp, col, val, x, i);
 }
 
 double csr_spmv_dot(const struct csr_matrix *A, const double *p, double *q)
@@ -171,7 +149,7 @@ double csr_spmv_dot(const struct csr_matrix *A, const double *p, double *q)
     double d = 0.0;
 #pragma omp parallel for schedule(static) reduction(+ : d) if (LS_PAR(A->n))
     for (int i = 0; i < A->n; i++) {
-        double s = row_dot(rp, col, val, p, i);
+        double s = csr_row_dot(rp, col, val, p, i);
         q[i] = s;
         d += p[i] * s;
     }
@@ -187,7 +165,7 @@ double csr_residual(const struct csr_matrix *A, const double *b,
     double d = 0.0;
 #pragma omp parallel for schedule(static) reduction(+ : d) if (LS_PAR(A->n))
     for (int i = 0; i < A->n; i++) {
-        double s = b[i] - row_dot(rp, col, val, x, i);
+        double s = b[i] - csr_row_dot(rp, col, val, x, i);
         r[i] = s;
         d += s * s;
     }

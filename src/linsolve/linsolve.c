@@ -90,6 +90,7 @@ int linsolve_create_named(const char *solver, const char *precond, double tol,
         return SIM_ERR_NOMEM;
     s->solver = so;
     s->pc.ops = ours ? po : &precond_none;
+    s->pc.symmetric = so->needs_spd_pc;
     s->tol = tol;
     s->maxiter = maxiter;
     s->warm_start = 1;

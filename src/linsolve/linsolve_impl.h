@@ -38,6 +38,8 @@ struct precond_ops {
                  const double *diag);
     /* z = M^-1 r (r and z distinct). */
     void (*apply)(const struct precond *pc, const double *r, double *z);
+    /* Frees pc->state (NULL when the preconditioner keeps none). */
+    void (*release)(struct precond *pc);
 };
 
 /* Storage of every preconditioner, grown on demand and kept across solves. */
@@ -55,10 +57,12 @@ struct precond {
     int n_cap;
     int64_t nnz_cap;
     double shift;            /* diagonal shift used after a breakdown, or 0 */
+    void *state;             /* a preconditioner's own storage (amg levels) */
+    int symmetric;           /* the solver needs M symmetric (PCG)          */
 };
 
 extern const struct precond_ops precond_none, precond_jacobi, precond_ic0,
-    precond_dic, precond_ilu0;
+    precond_dic, precond_ilu0, precond_amg;
 extern const struct precond_ops *const linsolve_preconditioners[];
 
 /* Make room for n rows and nnz factor entries in pc (keeps old storage when
@@ -133,6 +137,28 @@ struct linsolve {
     double *work[LINSOLVE_NWORK]; /* n each: solver vectors                 */
     void *ext;           /* solver-private state (CHOLMOD common, ...)     */
 };
+
+/* Row i of A times x. Four partial sums: with one, every multiply-add
+ * waits for the previous one (4 cycles of add latency per entry), which
+ * made the SpMV latency-bound rather than memory-bound on PPE rows of
+ * 13-120 entries. */
+static inline double csr_row_dot(const int64_t *restrict rp,
+                             const int32_t *restrict col,
+                             const double *restrict val,
+                             const double *restrict x, int i)
+{
+    double s0 = 0.0, s1 = 0.0, s2 = 0.0, s3 = 0.0;
+    int64_t k = rp[i], e = rp[i + 1];
+    for (; k + 3 < e; k += 4) {
+        s0 += val[k] * x[col[k]];
+        s1 += val[k + 1] * x[col[k + 1]];
+        s2 += val[k + 2] * x[col[k + 2]];
+        s3 += val[k + 3] * x[col[k + 3]];
+    }
+    for (; k < e; k++)
+        s0 += val[k] * x[col[k]];
+    return (s0 + s1) + (s2 + s3);
+}
 
 /* Check the preconditioner and solver combination (messages name both). */
 int linsolve_check_combination(const struct solver_ops *so,

@@ -11,7 +11,7 @@
 
 const struct precond_ops *const linsolve_preconditioners[] = {
     &precond_none, &precond_jacobi, &precond_ic0, &precond_dic, &precond_ilu0,
-    NULL};
+    &precond_amg, NULL};
 
 static int grow(void **p, size_t bytes)
 {
@@ -46,6 +46,8 @@ int precond_reserve(struct precond *pc, int n, int64_t nnz, int factor)
 
 void precond_release(struct precond *pc)
 {
+    if (pc->ops && pc->ops->release)
+        pc->ops->release(pc);
     free(pc->dinv);
     free(pc->y);
     free(pc->fp);
@@ -54,8 +56,10 @@ void precond_release(struct precond *pc)
     free(pc->fc);
     free(pc->fv);
     const struct precond_ops *ops = pc->ops;
+    int symmetric = pc->symmetric;
     memset(pc, 0, sizeof *pc);
     pc->ops = ops;
+    pc->symmetric = symmetric;
 }
 
 /* Insertion sort of one row by column: rows hold tens of entries. */

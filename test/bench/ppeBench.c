@@ -15,7 +15,7 @@
  * SpMV p, q; residual r r/w, q, dinv; direction x r/w, p r/w, r, dinv).
  *
  *   ppeBench [--quick] [--cholmod] [--reps N] [--only SOLVER:PRECOND]
- *            [--case DIM:NSIDE:RE ...]
+ *            [--case DIM:NSIDE:RE[:porous] ...]
  */
 #include <math.h>
 #include <omp.h>
@@ -33,7 +33,7 @@
 
 #define VEC_STREAMS 13
 
-struct bcase { int dim, nside; double re; };
+struct bcase { int dim, nside; double re; int porous; };
 
 /* Best-of-5 STREAM triad a = b + s c, bytes counted as 24 per element. */
 static double stream_triad_gbs(void)
@@ -78,7 +78,8 @@ static int build(const struct bcase *c, double move, struct csr_matrix *A,
 {
     struct csr_lattice L = {.dim = c->dim, .nside = c->nside, .re = c->re,
                             .jitter = 0.1, .move = move, .seed = 2024,
-                            .move_seed = 99, .rhs_seed = move > 0 ? 2 : 1};
+                            .move_seed = 99, .rhs_seed = move > 0 ? 2 : 1,
+                            .porous = c->porous};
     double t = app_wall_time();
     int rc = csr_lattice_ppe(&L, A, b);
     *secs = app_wall_time() - t;
@@ -152,14 +153,17 @@ static void run_case(const struct bcase *c, int reps, int cholmod,
         fprintf(stderr, "ppeBench: %s\n", sim_error_message());
         exit(1);
     }
-    printf("\n%dD %d^%d = %d rows, re %.1f: %.1f nnz/row, build %.3f s\n",
-           c->dim, c->nside, c->dim, A1.n, c->re, (double)A1.nnz / A1.n, t1);
+    printf("\n%dD %d^%d = %d rows, re %.1f%s: %.1f nnz/row, build %.3f s\n",
+           c->dim, c->nside, c->dim, A1.n, c->re,
+           c->porous ? ", porous (1/eps_j weights)" : "",
+           (double)A1.nnz / A1.n, t1);
     printf("  %-9s %-7s %6s %6s %9s %9s %9s %9s %8s %7s %7s\n", "solver",
            "precond", "it1", "it2", "setup_s", "solve_s", "total_s", "cpu_s",
            "ns/row/it", "GB/s", "%STREAM");
     static const char *combos[][2] = {{"pcg", "jacobi"}, {"pcg", "dic"},
                                       {"pcg", "ic0"}, {"bicgstab", "jacobi"},
-                                      {"bicgstab", "ilu0"}, {"hypre", "none"}};
+                                      {"pcg", "amg"}, {"bicgstab", "ilu0"},
+                                      {"bicgstab", "amg"}, {"hypre", "none"}};
     for (size_t k = 0; k < sizeof combos / sizeof combos[0]; k++)
         if (wanted(combos[k][0], combos[k][1]))
             run_solver(combos[k][0], combos[k][1], &A1, b1, &A2, b2, reps,
@@ -187,23 +191,28 @@ int main(int argc, char **argv)
             reps = atoi(argv[++i]);
         else if (!strcmp(argv[i], "--case") && i + 1 < argc && nc < 16) {
             struct bcase *c = &cases[nc];
-            if (sscanf(argv[++i], "%d:%d:%lf", &c->dim, &c->nside, &c->re) != 3) {
-                fprintf(stderr, "ppeBench: --case DIM:NSIDE:RE, e.g. 3:40:2.1\n");
+            char tail[16] = "";
+            int k = sscanf(argv[++i], "%d:%d:%lf:%15s", &c->dim, &c->nside,
+                           &c->re, tail);
+            c->porous = k == 4 && !strcmp(tail, "porous");
+            if (k < 3 || (k == 4 && !c->porous)) {
+                fprintf(stderr, "ppeBench: --case DIM:NSIDE:RE[:porous], e.g. "
+                                "3:40:2.1 or 3:40:3.1:porous\n");
                 return 2;
             }
             nc++;
         } else {
             fprintf(stderr, "usage: ppeBench [--quick] [--cholmod] [--reps N] "
                             "[--only SOLVER:PRECOND] "
-                            "[--case DIM:NSIDE:RE ...]\n");
+                            "[--case DIM:NSIDE:RE[:porous] ...]\n");
             return 2;
         }
     }
     if (nc == 0) {
-        const struct bcase all[] = {{2, 300, 2.1}, {2, 300, 3.1},
-                                    {3, 40, 2.1},  {3, 40, 3.1},
-                                    {3, 60, 2.1},  {3, 60, 3.1}};
-        const struct bcase small[] = {{2, 100, 2.1}, {3, 20, 2.1}};
+        const struct bcase all[] = {{2, 300, 2.1, 0}, {2, 300, 3.1, 0},
+                                    {3, 40, 2.1, 0},  {3, 40, 3.1, 0},
+                                    {3, 60, 2.1, 0},  {3, 60, 3.1, 0}};
+        const struct bcase small[] = {{2, 100, 2.1, 0}, {3, 20, 2.1, 0}};
         const struct bcase *src = quick ? small : all;
         nc = quick ? 2 : 6;
         memcpy(cases, src, (size_t)nc * sizeof *cases);

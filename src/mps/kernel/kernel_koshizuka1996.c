@@ -23,12 +23,18 @@ static double w_koshizuka(double r, double re)
     return re / rr - 1.0;
 }
 
+/* w_koshizuka without branches, so that the loop vectorises (as
+ * kernel_zhang2014.c). */
 static void weights_koshizuka(const double *r, int64_t n, double re,
                               double *w)
 {
-#pragma omp parallel for schedule(static)
-    for (int64_t k = 0; k < n; k++)
-        w[k] = w_koshizuka(r[k], re);
+    const double rmin = 1e-6 * re;
+#pragma omp parallel for simd schedule(static)
+    for (int64_t k = 0; k < n; k++) {
+        double rr = r[k] > rmin ? r[k] : rmin;
+        double v = re / rr - 1.0;
+        w[k] = r[k] < re ? v : 0.0;
+    }
 }
 
 const struct mps_kernel_ops mps_kernel_koshizuka1996 = {
