@@ -46,12 +46,12 @@ int linsolve_check_combination(const struct solver_ops *so,
 {
     if (so->needs_spd_pc && !po->spd)
         return sim_error(SIM_ERR_INPUT, "preconditioner '%s' is not symmetric;"
-                         " solver '%s' needs one of: none jacobi ic0 dic",
+                         " solver '%s' needs one of: none jacobi ic0 dic amg",
                          po->name, so->name);
     if (so->iterative && !so->needs_spd_pc && po->lower_only)
         return sim_error(SIM_ERR_INPUT, "preconditioner '%s' uses only the "
                          "lower triangle of a symmetric matrix; solver '%s' is "
-                         "for non-symmetric ones: use none, jacobi or ilu0",
+                         "for non-symmetric ones: use none, jacobi, ilu0 or amg",
                          po->name, so->name);
     return SIM_OK;
 }
