@@ -35,7 +35,7 @@
 void mps_free_surface(struct mps_solver *s)
 {
     struct mps_particles *P = &s->P;
-    const struct neighbour_list *nl = &s->nl;
+    const struct neighbour_list *nl = &s->nl_in; /* w_n: within r_inner */
     const struct mps_settings *S = &s->S;
     const double n0 = s->Ln.n0, f0 = s->Ln.f0, c = P->dim / n0;
     const double *w = s->w_n, *ie = P->inv_eps;
@@ -52,7 +52,7 @@ void mps_free_surface(struct mps_solver *s)
             } else if (nd < S->fs_n_max) {
                 double F[3] = { 0, 0, 0 };
                 const double *xi = P->x + 3 * i;
-                for (int64_t k = nl->start[i]; k < nl->start[i + 1]; k++) {
+                for (int64_t k = nl->start[i]; k < neighbour_row_end(nl, i); k++) {
                     int j = nl->j[k];
                     double r = nl->r[k];
                     if (w[k] == 0 || r == 0)
@@ -67,7 +67,7 @@ void mps_free_surface(struct mps_solver *s)
             }
         } else if (P->type[i] == MPS_WALL) {
             flag = MPS_DRY_WALL;
-            for (int64_t k = nl->start[i]; k < nl->start[i + 1] && nd >= S->beta;
+            for (int64_t k = nl->start[i]; k < neighbour_row_end(nl, i) && nd >= S->beta;
                  k++)
                 if (w[k] > 0 && P->type[nl->j[k]] == MPS_FLUID) {
                     flag = MPS_INNER;

@@ -107,6 +107,11 @@ int mps_solver_init(struct mps_solver *s, struct mps_particles *P,
     TRY(mps_lattice_constants(K, d, dp, S->re_grad * dp, &s->Lg));
     TRY(mps_lattice_constants(K, d, dp, S->re_lap * dp, &s->Ll));
     s->re_max = dp * fmax(S->re_n, fmax(S->re_grad, S->re_lap));
+    /* Rows split at the larger of the number-density and gradient radii
+     * when the Laplacian's is larger: their operators (and the collision
+     * model) then skip the outer pairs, 60-70 % of a row at 2.1 / 3.1 dp. */
+    double r_in = dp * fmax(S->re_n, S->re_grad);
+    s->nl.r_inner = r_in < s->re_max ? r_in : 0.0;
     /* With the predictor, pairs are re-measured at r* = r + dt u*: a skin
      * of half a spacing keeps pairs that come into range (a Courant
      * number below 0.25 moves two particles together by < 0.5 dp). */
@@ -331,6 +336,7 @@ void mps_weights(struct mps_solver *s)
 {
     const struct mps_settings *S = &s->S;
     const double dp = s->dp;
+    s->nl_in = neighbour_inner(&s->nl);
     S->kernel->weights(s->nl.r, s->nl.nnz, S->re_n * dp, s->w_n);
     if (s->w_g != s->w_n)
         S->kernel->weights(s->nl.r, s->nl.nnz, S->re_grad * dp, s->w_g);

@@ -68,7 +68,7 @@ static void predict_positions(struct mps_solver *s, double dt, double sign)
 static void density(struct mps_solver *s)
 {
     struct mps_particles *P = &s->P;
-    mps_number_density(&s->nl, s->w_n, P->inv_eps, NULL, P->nd);
+    mps_number_density(&s->nl_in, s->w_n, P->inv_eps, NULL, P->nd);
     const double inv_n0 = 1.0 / s->Ln.n0;
 #pragma omp parallel for schedule(static)
     for (int i = 0; i < P->n; i++)
@@ -80,13 +80,13 @@ static void correct(struct mps_solver *s, double dt)
 {
     struct mps_particles *P = &s->P;
     if (s->S.gradient == MPS_GRAD_CORRECTED)
-        mps_gradient_corrected(&s->nl, s->w_g, P->dim, s->Lg.n0, P->x, P->p,
+        mps_gradient_corrected(&s->nl_in, s->w_g, P->dim, s->Lg.n0, P->x, P->p,
                                P->inv_eps, s->rows_fluid, s->grad);
     else if (s->S.gradient == MPS_GRAD_PMIN)
-        mps_gradient_pmin(&s->nl, s->w_g, P->dim, s->Lg.n0, P->x, P->p,
+        mps_gradient_pmin(&s->nl_in, s->w_g, P->dim, s->Lg.n0, P->x, P->p,
                           P->inv_eps, s->rows_fluid, s->grad);
     else
-        mps_gradient(&s->nl, s->w_g, P->dim, s->Lg.n0, P->x, P->p,
+        mps_gradient(&s->nl_in, s->w_g, P->dim, s->Lg.n0, P->x, P->p,
                      P->inv_eps, s->rows_fluid, s->grad);
     const double c0 = dt / s->S.rho;
     const double *cs = P->corr_scale; /* Model B: 1/eps_i (eq. 5) */

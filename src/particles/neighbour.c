@@ -41,6 +41,10 @@ static int reserve_rows(struct neighbour_list *nl, int n)
         if (!s)
             return SIM_ERR_NOMEM;
         nl->cstart = s;
+        s = sim_realloc(nl->mid, c * sizeof *s);
+        if (!s)
+            return SIM_ERR_NOMEM;
+        nl->mid = s;
         nl->cap_n = c;
     }
     nl->n = n;
@@ -311,6 +315,7 @@ void neighbour_update(struct neighbour_list *nl, const double *x)
 {
     const int n = nl->n;
     const double rc2 = nl->rc * nl->rc;
+    const double ri2 = nl->r_inner > 0 ? nl->r_inner * nl->r_inner : rc2;
     int64_t *cnt = nl->blk;
     /* blk holds nbuf counts: never more threads than at the build */
     int nth = omp_get_max_threads() < nl->nbuf ? omp_get_max_threads()
@@ -330,11 +335,21 @@ void neighbour_update(struct neighbour_list *nl, const double *x)
             int64_t len = nl->start[i], k0 = nl->cstart[i];
             nl->start[i] = off;
             const double *xi = x + 3 * i;
+            /* pairs within r_inner from the front, the others from the
+             * back (without a branch: which it is does not follow a
+             * pattern); with no split every pair is "inner" */
+            int64_t front = off, back = off + len - 1;
             for (int64_t m = 0; m < len; m++) {
                 int j = nl->sj[k0 + m];
-                nl->j[off + m] = j;
-                nl->r[off + m] = sqrt(dist2(xi, x + 3 * j));
+                double d2 = dist2(xi, x + 3 * j);
+                int in = d2 < ri2;
+                int64_t pos = in ? front : back;
+                front += in;
+                back -= !in;
+                nl->j[pos] = j;
+                nl->r[pos] = sqrt(d2);
             }
+            nl->mid[i] = front;
             off += len;
         }
         if (t == nt - 1) {
@@ -395,7 +410,16 @@ int neighbour_build_brute(struct neighbour_list *nl, int dim, const double *x,
             TRY(reserve_entries(nl, nl->nnz));
         }
     }
+    for (int i = 0; i < n; i++) /* no split: every pair counts as inner */
+        nl->mid[i] = nl->start[i + 1];
     return SIM_OK;
+}
+
+struct neighbour_list neighbour_inner(const struct neighbour_list *nl)
+{
+    struct neighbour_list v = *nl;
+    v.end = nl->mid;
+    return v;
 }
 
 void neighbour_free(struct neighbour_list *nl)
@@ -404,6 +428,7 @@ void neighbour_free(struct neighbour_list *nl)
     free(nl->j);
     free(nl->r);
     free(nl->cstart);
+    free(nl->mid);
     free(nl->cj);
     free(nl->sj);
     for (int t = 0; t < nl->nbuf; t++)

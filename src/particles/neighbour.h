@@ -2,8 +2,9 @@
  * neighbour.h — neighbour lists in CSR form, built once per step from a
  * cell grid and shared by every operator of the step.
  *
- * Row i holds every j != i with |x_j - x_i| < rc, in cell-traversal order,
- * and the distance r_ij. Particles in the grid's outside bucket have empty
+ * Row i holds every j != i with |x_j - x_i| < rc, in cell-traversal order
+ * (split rows: those within r_inner in that order, then the others in the
+ * reverse order), and the distance r_ij. Particles in the grid's outside bucket have empty
  * rows and appear in no row. The list is rebuilt in place; storage grows
  * but is never released until neighbour_free(), so that the time loop does
  * not allocate once sizes have settled.
@@ -50,7 +51,29 @@ struct neighbour_list {
      * leaves row i empty (i still appears in the rows of others), for
      * particles whose own sums nobody reads (MPS dummy layers). */
     const uint8_t *rows;
+    /* Optional split of the rows, for operators of a smaller radius than
+     * rc (MPS: number density and gradient at 2.1 dp in a list of the
+     * Laplacian's 3.1 dp): with r_inner > 0 (set before a build) every
+     * row holds its pairs with r < r_inner first, [start[i], mid[i]),
+     * then the others. */
+    double r_inner;
+    int64_t *mid;     /* n, when r_inner > 0                            */
+    /* NULL for a list; in a view made by neighbour_inner() the end of
+     * each row, which operators read through neighbour_row_end(). */
+    const int64_t *end;
 };
+
+/* End of row i: start[i + 1], or the view's end[i]. */
+static inline int64_t neighbour_row_end(const struct neighbour_list *nl,
+                                        int i)
+{
+    return nl->end ? nl->end[i] : nl->start[i + 1];
+}
+
+/* A view of nl whose rows hold only the pairs within nl->r_inner (the
+ * whole rows when nl has no split). It shares nl's arrays: make it again
+ * after every build or update. */
+struct neighbour_list neighbour_inner(const struct neighbour_list *nl);
 
 /* Build from a grid of the same positions (g->h >= rc / 2 is required). */
 int neighbour_build(struct neighbour_list *nl, const struct cell_grid *g,

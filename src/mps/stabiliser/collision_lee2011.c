@@ -28,8 +28,8 @@ static int apply_collision(struct mps_solver *s, double dt)
 {
     (void)dt;
     struct mps_particles *P = &s->P;
-    const struct neighbour_list *nl = &s->nl;
     const double rc = s->S.collision_ratio * s->dp;
+    const struct neighbour_list *nl = rc <= s->nl.r_inner ? &s->nl_in : &s->nl;
     const double e = s->S.collision_restitution;
     double *du = s->grad; /* free before the correction */
     double *u = s->ustar;
@@ -37,7 +37,7 @@ static int apply_collision(struct mps_solver *s, double dt)
     for (int i = 0; i < P->n; i++) {
         double d[3] = { 0, 0, 0 };
         if (P->type[i] == MPS_FLUID) {
-            for (int64_t k = nl->start[i]; k < nl->start[i + 1]; k++) {
+            for (int64_t k = nl->start[i]; k < neighbour_row_end(nl, i); k++) {
                 double r = nl->r[k];
                 if (r >= rc || r == 0)
                     continue;

@@ -1,8 +1,8 @@
 /* test_neighbour.c — cell lists and CSR neighbour lists against the O(n^2)
  * reference on random sets (2-D and 3-D, with particles outside the box and
  * NaN positions; cells of the cut-off and of half of it; a Verlet list with
- * a skin updated after moves; rows left empty by a mask), and cell-order
- * renumbering. */
+ * a skin updated after moves; rows split at an inner radius; rows left
+ * empty by a mask), and cell-order renumbering. */
 #include <setjmp.h>
 #include <stdarg.h>
 #include <stddef.h>
@@ -86,10 +86,31 @@ static void random_case(int dim, int n, double rc, double h, int with_box)
     free(x);
 }
 
+/* Split rows (r_inner > 0): [start, mid) holds exactly the pairs within
+ * r_inner (as many as the brute-force list of that radius has), the rest
+ * of the row the others; the inner view ends each row at mid. */
+static void check_split(const struct neighbour_list *nl, const double *x,
+                        int dim, int n, double ri)
+{
+    struct neighbour_list in = { 0 };
+    assert_int_equal(neighbour_build_brute(&in, dim, x, n, ri), 0);
+    struct neighbour_list v = neighbour_inner(nl);
+    for (int i = 0; i < nl->n; i++) {
+        assert_true(nl->mid[i] >= nl->start[i] && nl->mid[i] <= nl->start[i + 1]);
+        assert_int_equal(neighbour_row_end(&v, i), nl->mid[i]);
+        assert_int_equal(nl->mid[i] - nl->start[i], in.start[i + 1] - in.start[i]);
+        for (int64_t k = nl->start[i]; k < nl->start[i + 1]; k++)
+            assert_true((k < nl->mid[i]) == (nl->r[k] < ri));
+    }
+    neighbour_free(&in);
+}
+
 /* Verlet list: candidates within rc + skin on cells of (rc + skin) / 2,
  * then rows re-selected after every particle moved by less than skin/2
- * equal the brute-force list at the new positions, twice in a row. */
-static void skin_case(int dim, int n, double rc, double skin, double h)
+ * equal the brute-force list at the new positions, twice in a row; with
+ * ri > 0 the rows are split at ri (check_split). */
+static void skin_case(int dim, int n, double rc, double skin, double h,
+                      double ri)
 {
     double *x = calloc(3 * (size_t)n, sizeof *x);
     for (int i = 0; i < n; i++)
@@ -100,9 +121,12 @@ static void skin_case(int dim, int n, double rc, double skin, double h)
     struct cell_grid g = { 0 };
     struct neighbour_list fast = { 0 }, ref = { 0 };
     assert_int_equal(cells_build(&g, dim, x, n, h, lo, hi), 0);
+    fast.r_inner = ri;
     assert_int_equal(neighbour_build_skin(&fast, &g, x, rc, skin), 0);
     x[0] = NAN;
     assert_int_equal(neighbour_build_brute(&ref, dim, x, n, rc), 0);
+    if (ri > 0)
+        check_split(&fast, x, dim, n, ri);
     compare(&fast, &ref, x);
     assert_true(fast.nnz_cand > fast.nnz);
     const double a = 0.499 * skin / sqrt(dim) / 2; /* two moves < skin/2 */
@@ -112,6 +136,8 @@ static void skin_case(int dim, int n, double rc, double skin, double h)
                 x[3 * i + k] += a * (2 * urand() - 1);
         neighbour_update(&fast, x);
         assert_int_equal(neighbour_build_brute(&ref, dim, x, n, rc), 0);
+        if (ri > 0)
+            check_split(&fast, x, dim, n, ri);
         compare(&fast, &ref, x);
     }
     cells_free(&g);
@@ -170,8 +196,9 @@ static void test_row_mask(void **st)
     free(x);
 }
 
-static void test_skin_3d(void **s) { (void)s; skin_case(3, 3000, 0.07, 0.03, 0.05); }
-static void test_skin_2d(void **s) { (void)s; skin_case(2, 3000, 0.05, 0.02, 0.07); }
+static void test_skin_3d(void **s) { (void)s; skin_case(3, 3000, 0.07, 0.03, 0.05, 0); }
+static void test_skin_2d(void **s) { (void)s; skin_case(2, 3000, 0.05, 0.02, 0.07, 0); }
+static void test_split_3d(void **s) { (void)s; skin_case(3, 3000, 0.07, 0.03, 0.05, 0.047); }
 static void test_random_3d(void **s) { (void)s; random_case(3, 3000, 0.07, 0.07, 1); }
 static void test_half_cells(void **s) { (void)s; random_case(3, 3000, 0.08, 0.04, 1); }
 static void test_random_2d(void **s) { (void)s; random_case(2, 3000, 0.05, 0.06, 1); }
@@ -231,6 +258,7 @@ int main(void)
         cmocka_unit_test(test_half_cells),
         cmocka_unit_test(test_skin_3d),
         cmocka_unit_test(test_skin_2d),
+        cmocka_unit_test(test_split_3d),
         cmocka_unit_test(test_random_2d),
         cmocka_unit_test(test_random_bbox),
         cmocka_unit_test(test_bad_cutoff),
