@@ -68,7 +68,7 @@ struct level {
     int64_t *mstart;     /* nc+1: members of each aggregate, as CSR      */
     int32_t *members;    /* n                                            */
     double *r, *z, *t;   /* n: right-hand side, correction, residual     */
-    double *w, *w2;
+    double *w, *w2;      /* n: the W-cycle's second residual, correction */
     float *fval;         /* A.val rounded to float, for the smoothing     */
     size_t n_cap, nnz_cap, fval_cap;
 };
@@ -110,39 +110,34 @@ static int grow(void **p, size_t *cap, size_t want, size_t elem)
     return SIM_OK;
 }
 
+static int resize(void **p, size_t bytes)
+{
+    void *q = sim_realloc(*p, bytes ? bytes : 1);
+    if (!q)
+        return SIM_ERR_NOMEM;
+    *p = q;
+    return SIM_OK;
+}
+
+/* Room for n rows on level L and, for a coarse level (own), its matrix of
+ * nnz entries. */
 static int level_reserve(struct level *L, int n, int64_t nnz, int own)
 {
-    size_t c = L->n_cap;
-    if ((size_t)n > c || !L->r) {
+    if ((size_t)n > L->n_cap || !L->r) {
         size_t m = (size_t)n;
-        void *a[] = {L->dinv, L->r, L->z, L->t, L->w, L->w2};
-        for (int k = 0; k < 6; k++) {
-            size_t cc = c;
-            TRY(grow(&a[k], &cc, m, sizeof(double)));
-        }
-        L->dinv = a[0];
-        L->r = a[1];
-        L->z = a[2];
-        L->t = a[3];
-        L->w = a[4];
-        L->w2 = a[5];
-        size_t cc = c;
-        TRY(grow((void **)&L->agg, &cc, m, sizeof(int32_t)));
-        cc = c;
-        TRY(grow((void **)&L->members, &cc, m, sizeof(int32_t)));
-        cc = c;
-        TRY(grow((void **)&L->mstart, &cc, m + 1, sizeof(int64_t)));
-        if (own) {
-            cc = c;
-            TRY(grow((void **)&L->A.rowptr, &cc, m + 1, sizeof(int64_t)));
-        }
+        double **v[] = {&L->dinv, &L->r, &L->z, &L->t, &L->w, &L->w2};
+        for (size_t k = 0; k < sizeof v / sizeof v[0]; k++)
+            TRY(resize((void **)v[k], m * sizeof(double)));
+        TRY(resize((void **)&L->agg, m * sizeof(int32_t)));
+        TRY(resize((void **)&L->members, m * sizeof(int32_t)));
+        TRY(resize((void **)&L->mstart, (m + 1) * sizeof(int64_t)));
+        if (own)
+            TRY(resize((void **)&L->A.rowptr, (m + 1) * sizeof(int64_t)));
         L->n_cap = m;
     }
     if (own && ((size_t)nnz > L->nnz_cap || !L->A.col)) {
-        size_t cc = L->nnz_cap;
-        TRY(grow((void **)&L->A.col, &cc, (size_t)nnz, sizeof(int32_t)));
-        cc = L->nnz_cap;
-        TRY(grow((void **)&L->A.val, &cc, (size_t)nnz, sizeof(double)));
+        TRY(resize((void **)&L->A.col, (size_t)nnz * sizeof(int32_t)));
+        TRY(resize((void **)&L->A.val, (size_t)nnz * sizeof(double)));
         L->nnz_cap = (size_t)nnz;
     }
     return SIM_OK;
@@ -227,19 +222,18 @@ static int aggregate(const struct csr_matrix *A, int32_t *agg)
         if (agg[i] >= 0)
             continue;
         double sbest = 0.0;
-        int to = -1;
+        int to = -1, coupled = 0;
         for (int64_t k = A->rowptr[i]; k < A->rowptr[i + 1]; k++) {
             int j = A->col[k];
-            if (j != i && agg[j] >= 0 && -A->val[k] > sbest) {
-                sbest = -A->val[k];
+            double s = -A->val[k];
+            coupled |= j != i && s > 0.0;
+            if (j != i && agg[j] >= 0 && s > sbest) {
+                sbest = s;
                 to = agg[j];
             }
         }
         /* a row with no negative coupling (a Dirichlet identity row) needs
          * no coarse value: the smoother solves it exactly */
-        int coupled = 0;
-        for (int64_t k = A->rowptr[i]; k < A->rowptr[i + 1]; k++)
-            coupled |= A->col[k] != i && A->val[k] < 0.0;
         agg[i] = to >= 0 ? to : coupled ? nagg++ : -1;
     }
     return nagg;
@@ -467,7 +461,7 @@ static int setup(struct precond *pc, const struct csr_matrix *A,
     return SIM_OK;
 }
 
-/* ---- the V-cycle ---------------------------------------------------------- */
+/* ---- the cycle ---------------------------------------------------------- */
 
 static void cycle(const struct amg *g, int l, const double *r, double *z)
 {
