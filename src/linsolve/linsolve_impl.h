@@ -141,24 +141,29 @@ struct linsolve {
 /* Row i of A times x. Four partial sums: with one, every multiply-add
  * waits for the previous one (4 cycles of add latency per entry), which
  * made the SpMV latency-bound rather than memory-bound on PPE rows of
- * 13-120 entries. */
-static inline double csr_row_dot(const int64_t *restrict rp,
-                             const int32_t *restrict col,
-                             const double *restrict val,
-                             const double *restrict x, int i)
-{
-    double s0 = 0.0, s1 = 0.0, s2 = 0.0, s3 = 0.0;
-    int64_t k = rp[i], e = rp[i + 1];
-    for (; k + 3 < e; k += 4) {
-        s0 += val[k] * x[col[k]];
-        s1 += val[k + 1] * x[col[k + 1]];
-        s2 += val[k + 2] * x[col[k + 2]];
-        s3 += val[k + 3] * x[col[k + 3]];
+ * 13-120 entries. Values in double (csr_row_dot) or float
+ * (csr_row_dot_f: precond_amg.c's copy of its level matrices), sums in
+ * double. */
+#define CSR_ROW_DOT(name, vtype)                                          \
+    static inline double name(const int64_t *restrict rp,                 \
+                              const int32_t *restrict col,                \
+                              const vtype *restrict val,                  \
+                              const double *restrict x, int i)            \
+    {                                                                     \
+        double s0 = 0.0, s1 = 0.0, s2 = 0.0, s3 = 0.0;                    \
+        int64_t k = rp[i], e = rp[i + 1];                                 \
+        for (; k + 3 < e; k += 4) {                                       \
+            s0 += (double)val[k] * x[col[k]];                             \
+            s1 += (double)val[k + 1] * x[col[k + 1]];                     \
+            s2 += (double)val[k + 2] * x[col[k + 2]];                     \
+            s3 += (double)val[k + 3] * x[col[k + 3]];                     \
+        }                                                                 \
+        for (; k < e; k++)                                                \
+            s0 += (double)val[k] * x[col[k]];                             \
+        return (s0 + s1) + (s2 + s3);                                     \
     }
-    for (; k < e; k++)
-        s0 += val[k] * x[col[k]];
-    return (s0 + s1) + (s2 + s3);
-}
+CSR_ROW_DOT(csr_row_dot, double)
+CSR_ROW_DOT(csr_row_dot_f, float)
 
 /* Check the preconditioner and solver combination (messages name both). */
 int linsolve_check_combination(const struct solver_ops *so,

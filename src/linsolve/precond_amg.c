@@ -147,24 +147,6 @@ static int level_reserve(struct level *L, int n, int64_t nnz, int own)
  * per entry in the memory-bound SpMV, and M changes by a relative 6e-8,
  * far below what a preconditioner needs. The Krylov method keeps the
  * double A, so the answer and its tolerance are unchanged. */
-static inline double frow_dot(const int64_t *restrict rp,
-                              const int32_t *restrict col,
-                              const float *restrict val,
-                              const double *restrict x, int i)
-{
-    double s0 = 0.0, s1 = 0.0, s2 = 0.0, s3 = 0.0;
-    int64_t k = rp[i], e = rp[i + 1];
-    for (; k + 3 < e; k += 4) {
-        s0 += (double)val[k] * x[col[k]];
-        s1 += (double)val[k + 1] * x[col[k + 1]];
-        s2 += (double)val[k + 2] * x[col[k + 2]];
-        s3 += (double)val[k + 3] * x[col[k + 3]];
-    }
-    for (; k < e; k++)
-        s0 += (double)val[k] * x[col[k]];
-    return (s0 + s1) + (s2 + s3);
-}
-
 static int to_float(struct level *L)
 {
     const struct csr_matrix *A = &L->A;
@@ -481,7 +463,7 @@ static void cycle(const struct amg *g, int l, const double *r, double *z)
             z[i] = L->dinv[i] * r[i];
 #pragma omp parallel for schedule(static) if (AMG_PAR(A))
         for (int i = 0; i < n; i++)
-            t[i] = r[i] - frow_dot(A->rowptr, A->col, L->fval, z, i);
+            t[i] = r[i] - csr_row_dot_f(A->rowptr, A->col, L->fval, z, i);
         t0 = t;
     }
     const int nc = C->A.n;
@@ -498,7 +480,7 @@ static void cycle(const struct amg *g, int l, const double *r, double *z)
         const struct csr_matrix *Ac = &C->A;
 #pragma omp parallel for schedule(static) if (AMG_PAR(Ac))
         for (int I = 0; I < nc; I++)
-            C->w[I] = C->r[I] - frow_dot(Ac->rowptr, Ac->col, C->fval, C->z, I);
+            C->w[I] = C->r[I] - csr_row_dot_f(Ac->rowptr, Ac->col, C->fval, C->z, I);
         cycle(g, l + 1, C->w, C->w2);
 #pragma omp parallel for schedule(static) if (AMG_PAR(Ac))
         for (int I = 0; I < nc; I++)
@@ -511,7 +493,7 @@ static void cycle(const struct amg *g, int l, const double *r, double *z)
     }
 #pragma omp parallel for schedule(static) if (AMG_PAR(A))
     for (int i = 0; i < n; i++)
-        t[i] = r[i] - frow_dot(A->rowptr, A->col, L->fval, z, i);
+        t[i] = r[i] - csr_row_dot_f(A->rowptr, A->col, L->fval, z, i);
 #pragma omp parallel for schedule(static) if (AMG_PAR(A))
     for (int i = 0; i < n; i++)
         z[i] += L->dinv[i] * t[i];
