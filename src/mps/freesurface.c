@@ -52,7 +52,8 @@ void mps_free_surface(struct mps_solver *s)
             } else if (nd < S->fs_n_max) {
                 double F[3] = { 0, 0, 0 };
                 const double *xi = P->x + 3 * i;
-                for (int64_t k = nl->start[i]; k < neighbour_row_end(nl, i); k++) {
+                const int64_t k1 = neighbour_row_end(nl, i);
+                for (int64_t k = nl->start[i]; k < k1; k++) {
                     int j = nl->j[k];
                     double r = nl->r[k];
                     if (w[k] == 0 || r == 0)
@@ -67,8 +68,8 @@ void mps_free_surface(struct mps_solver *s)
             }
         } else if (P->type[i] == MPS_WALL) {
             flag = MPS_DRY_WALL;
-            for (int64_t k = nl->start[i]; k < neighbour_row_end(nl, i) && nd >= S->beta;
-                 k++)
+            const int64_t k1 = neighbour_row_end(nl, i);
+            for (int64_t k = nl->start[i]; k < k1 && nd >= S->beta; k++)
                 if (w[k] > 0 && P->type[nl->j[k]] == MPS_FLUID) {
                     flag = MPS_INNER;
                     break;

@@ -109,7 +109,8 @@ void mps_gradient_corrected(const struct neighbour_list *nl, const double *w,
             continue;
         double v[3] = { 0, 0, 0 }, m[9] = { 0 }, g[3];
         const double *xi = x + 3 * i;
-        for (int64_t k = nl->start[i]; k < neighbour_row_end(nl, i); k++) {
+        const int64_t k1 = neighbour_row_end(nl, i);
+        for (int64_t k = nl->start[i]; k < k1; k++) {
             int j = nl->j[k];
             double r = nl->r[k];
             if (w[k] == 0 || r == 0)

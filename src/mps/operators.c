@@ -72,7 +72,8 @@ void mps_number_density(const struct neighbour_list *nl, const double *w,
         if (rows && !rows[i])
             continue;
         double s = 0;
-        for (int64_t k = nl->start[i]; k < neighbour_row_end(nl, i); k++)
+        const int64_t k1 = neighbour_row_end(nl, i);
+        for (int64_t k = nl->start[i]; k < k1; k++)
             s += w[k] * IEPS(nl->j[k]);
         n[i] = s;
     }
@@ -89,7 +90,8 @@ void mps_gradient(const struct neighbour_list *nl, const double *w, int dim,
             continue;
         double g[3] = { 0, 0, 0 };
         const double *xi = x + 3 * i;
-        for (int64_t k = nl->start[i]; k < neighbour_row_end(nl, i); k++) {
+        const int64_t k1 = neighbour_row_end(nl, i);
+        for (int64_t k = nl->start[i]; k < k1; k++) {
             int j = nl->j[k];
             double r = nl->r[k];
             if (w[k] == 0 || r == 0)
@@ -114,10 +116,11 @@ void mps_gradient_pmin(const struct neighbour_list *nl, const double *w,
             continue;
         double g[3] = { 0, 0, 0 }, pmin = phi[i];
         const double *xi = x + 3 * i;
-        for (int64_t k = nl->start[i]; k < neighbour_row_end(nl, i); k++)
+        const int64_t k1 = neighbour_row_end(nl, i);
+        for (int64_t k = nl->start[i]; k < k1; k++)
             if (w[k] > 0)
                 pmin = fmin(pmin, phi[nl->j[k]]);
-        for (int64_t k = nl->start[i]; k < neighbour_row_end(nl, i); k++) {
+        for (int64_t k = nl->start[i]; k < k1; k++) {
             int j = nl->j[k];
             double r = nl->r[k];
             if (w[k] == 0 || r == 0)
@@ -142,7 +145,8 @@ void mps_divergence(const struct neighbour_list *nl, const double *w, int dim,
             continue;
         double s = 0;
         const double *xi = x + 3 * i, *ui = u + 3 * i;
-        for (int64_t k = nl->start[i]; k < neighbour_row_end(nl, i); k++) {
+        const int64_t k1 = neighbour_row_end(nl, i);
+        for (int64_t k = nl->start[i]; k < k1; k++) {
             int j = nl->j[k];
             double r = nl->r[k];
             if (w[k] == 0 || r == 0)
@@ -212,7 +216,8 @@ void mps_surface_vector(const struct neighbour_list *nl, const double *w,
             continue;
         double F[3] = { 0, 0, 0 };
         const double *xi = x + 3 * i;
-        for (int64_t k = nl->start[i]; k < neighbour_row_end(nl, i); k++) {
+        const int64_t k1 = neighbour_row_end(nl, i);
+        for (int64_t k = nl->start[i]; k < k1; k++) {
             int j = nl->j[k];
             double r = nl->r[k];
             if (w[k] == 0 || r == 0)

@@ -37,7 +37,8 @@ static int apply_collision(struct mps_solver *s, double dt)
     for (int i = 0; i < P->n; i++) {
         double d[3] = { 0, 0, 0 };
         if (P->type[i] == MPS_FLUID) {
-            for (int64_t k = nl->start[i]; k < neighbour_row_end(nl, i); k++) {
+            const int64_t k1 = neighbour_row_end(nl, i);
+            for (int64_t k = nl->start[i]; k < k1; k++) {
                 double r = nl->r[k];
                 if (r >= rc || r == 0)
                     continue;
