@@ -2,20 +2,22 @@
 # mpsDemSedimentation2D.sh — quick 2-D version of the sedimentation case
 # (METHODS.md A.12.1, E1-16, E1-18): 15 beads (d = 5 mm, 5 x 3, centres
 # 10 mm apart) released in a 0.05 m wide tank of still water 0.1 m deep,
-# dp = 5 mm, 0.5 s, Model A and Model B in tandem (~2 s each):
+# dp = 5 mm, 0.8 s, Model A and Model B in tandem (~3 s each):
 #   both run to End without escapes;
 #   the fluid leaves out the grain volume (particleDict grainVolume scale),
 #   so that the case starts at rest;
 #   Model B (E1-16, with its eps factors of eqs. 5 and 13): grain kinetic
-#   energy, mean over 0.4-0.5 s, <= 1 % of its peak (measured 0.42 %; the
-#   last sample alone scatters between 0.1 and 1.1 % as the beads settle),
-#   |total drag| <= 2 % of the submerged weight (measured 0.6 %), total
-#   buoyancy = N V rho_f g to 1e-8 (9 digits written);
-#   Model A: the same mean <= 5 % of its peak (measured 1.9 %: Model A
-#   settles more slowly; the paper's late growth of its energy, E1-18,
-#   does not appear in this coarse quick case); its pressure-gradient force
+#   energy, mean over 0.7-0.8 s, once the beads have settled, <= 1 % of its
+#   peak (measured 2e-6, 3e-10 and 5e-11 of the peak with the PPE
+#   preconditioners jacobi, amg and none; over 0.4-0.5 s, while the beads
+#   still settle, the mean scattered from 0.4 to 1.9 % with the PPE
+#   solver's round-off), |total drag| <= 2 % of the submerged weight,
+#   total buoyancy = N V rho_f g to 1e-8 (9 digits written);
+#   Model A: the same mean <= 5 % of its peak (measured 4e-9 to 0.4 %; the
+#   paper's late growth of its energy, E1-18, does not appear in this
+#   coarse quick case); its pressure-gradient force
 #   (A0-14) over 0.3-0.5 s is within 50 % of the buoyancy on average
-#   (measured +26 %, standard deviation 5 %: eq. 8 is not consistent where
+#   (measured +22 to +26 %, standard deviation 4-5 %: eq. 8 is not consistent where
 #   the weights 1/eps_j vary).
 # Coupling output fields (issue 6) at 0.1 s and 0.5 s, both models:
 #   dem.vtu holds porosity, fluidVelocity, slipVelocity, drag and buoyancy
@@ -91,7 +93,7 @@ regions
 EOD
     cat > "$c/system/controlDict" <<'EOD'
 FoamFile { version 2.0; format ascii; class dictionary; object controlDict; }
-startFrom startTime; startTime 0; endTime 0.5; deltaT 4e-4; adjustTimeStep no;
+startFrom startTime; startTime 0; endTime 0.8; deltaT 4e-4; adjustTimeStep no;
 writeControl runTime; writeInterval 0.1; writeFormat ascii;
 functions
 {
@@ -110,12 +112,12 @@ EOD
         continue
     fi
     pass "sedimentation2D_${model}_run"
-    ke=$(awk '!/^#/ { if ($4 > pk) pk = $4; if ($1 > 0.4) { s += $4; n++ } } END { print s / n / pk }' \
+    ke=$(awk '!/^#/ { if ($4 > pk) pk = $4; if ($1 > 0.7) { s += $4; n++ } } END { print s / n / pk }' \
          "$c/postProcessing/energy/0/kineticEnergy.dat")
     kmax=$([ $model = B ] && echo 0.01 || echo 0.05)
     awk -v r="$ke" -v m="$kmax" 'BEGIN { exit !(r >= 0 && r <= m) }' \
-        && pass "sedimentation2D_${model}_kineticEnergy mean E(0.4-0.5 s)/E_peak = $ke" \
-        || fail "sedimentation2D_${model}_kineticEnergy" "mean E(0.4-0.5 s)/E_peak = $ke (<= $kmax)"
+        && pass "sedimentation2D_${model}_kineticEnergy mean E(0.7-0.8 s)/E_peak = $ke" \
+        || fail "sedimentation2D_${model}_kineticEnergy" "mean E(0.7-0.8 s)/E_peak = $ke (<= $kmax)"
     # last row: time drag(3) pressure(3) slip eps wet; 15 beads of d = 5 mm
     read -r dr pr <<< "$(awk '!/^#/ { l = $0 } END { split(l, a)
         V = 15 * 4 / 3 * 3.14159265358979 * 0.0025^3
