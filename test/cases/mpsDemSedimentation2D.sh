@@ -15,10 +15,10 @@
 #   total buoyancy = N V rho_f g to 1e-8 (9 digits written);
 #   Model A: the same mean <= 5 % of its peak (measured 4e-9 to 0.4 %; the
 #   paper's late growth of its energy, E1-18, does not appear in this
-#   coarse quick case); its pressure-gradient force
-#   (A0-14) over 0.3-0.5 s is within 50 % of the buoyancy on average
-#   (measured +22 to +26 %, standard deviation 4-5 %: eq. 8 is not consistent where
-#   the weights 1/eps_j vary).
+#   coarse quick case); its pressure-gradient force (A0-14) over 0.3-0.5 s
+#   is within 50 % of the buoyancy on average (measured +22 to +26 %,
+#   standard deviation 4-5 %: eq. 8 is not consistent where the weights
+#   1/eps_j vary).
 # Coupling output fields (issue 6) at 0.1 s and 0.5 s, both models:
 #   dem.vtu holds porosity, fluidVelocity, slipVelocity, drag and buoyancy
 #   (B) / pressureGradientForce (A); fluid.vtu porosity and reaction;
