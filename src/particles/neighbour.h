@@ -4,8 +4,8 @@
  *
  * Row i holds every j != i with |x_j - x_i| < rc, in cell-traversal order
  * (split rows: those within r_inner in that order, then the others in the
- * reverse order), and the distance r_ij. Particles in the grid's outside bucket have empty
- * rows and appear in no row. The list is rebuilt in place; storage grows
+ * reverse order), and the distance r_ij. Particles in the grid's outside
+ * bucket have empty rows and appear in no row. The list is rebuilt in place; storage grows
  * but is never released until neighbour_free(), so that the time loop does
  * not allocate once sizes have settled.
  *
@@ -55,9 +55,10 @@ struct neighbour_list {
      * rc (MPS: number density and gradient at 2.1 dp in a list of the
      * Laplacian's 3.1 dp): with r_inner > 0 (set before a build) every
      * row holds its pairs with r < r_inner first, [start[i], mid[i]),
-     * then the others. */
+     * then the others. neighbour_build_brute() does not split: there
+     * mid[i] is the row's end and the view holds whole rows. */
     double r_inner;
-    int64_t *mid;     /* n, when r_inner > 0                            */
+    int64_t *mid;     /* n                                              */
     /* NULL for a list; in a view made by neighbour_inner() the end of
      * each row, which operators read through neighbour_row_end(). */
     const int64_t *end;
