@@ -5,9 +5,9 @@
  * Row i holds every j != i with |x_j - x_i| < rc, in cell-traversal order
  * (split rows: those within r_inner in that order, then the others in the
  * reverse order), and the distance r_ij. Particles in the grid's outside
- * bucket have empty rows and appear in no row. The list is rebuilt in place; storage grows
- * but is never released until neighbour_free(), so that the time loop does
- * not allocate once sizes have settled.
+ * bucket have empty rows and appear in no row. The list is rebuilt in
+ * place; storage grows but is never released until neighbour_free(), so
+ * that the time loop does not allocate once sizes have settled.
  *
  * Skin (Verlet list): neighbour_build_skin() also keeps the candidate
  * pairs within rc + skin (indices only). neighbour_update() re-selects the
