@@ -51,7 +51,8 @@ int linsolve_check_combination(const struct solver_ops *so,
     if (so->iterative && !so->needs_spd_pc && po->lower_only)
         return sim_error(SIM_ERR_INPUT, "preconditioner '%s' uses only the "
                          "lower triangle of a symmetric matrix; solver '%s' is "
-                         "for non-symmetric ones: use none, jacobi, ilu0 or amg",
+                         "for non-symmetric ones: use none, jacobi, ilu0 or "
+                         "amg",
                          po->name, so->name);
     return SIM_OK;
 }

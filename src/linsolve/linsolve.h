@@ -15,8 +15,8 @@
  * matrix); bicgstab (non-symmetric PPE of the coupled case, porosity
  * weights) takes none, jacobi, ilu0 or amg (aggregation multigrid, one
  * W-cycle per application: iterations nearly independent of the
- * resolution, precond_amg.c); cholmod (direct; SPD only, small systems and tests)
- * and hypre (BoomerAMG-PCG, only in a `make HYPRE=1` build) read no
+ * resolution, precond_amg.c); cholmod (direct; SPD only, small systems
+ * and tests) and hypre (BoomerAMG-PCG, only in a `make HYPRE=1` build) read no
  * preconditioner. Other pairs are refused with a message.
  *
  * Every system is validated (n > 0, structure, finite values, positive

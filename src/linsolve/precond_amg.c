@@ -158,7 +158,7 @@ static int to_float(struct level *L)
     return SIM_OK;
 }
 
-/* ---- set-up --------------------------------------------------------------- */
+/* ---- set-up ------------------------------------------------------------ */
 
 /* Greedy aggregation of A's rows into L->agg; returns the aggregate count. */
 static int aggregate(const struct csr_matrix *A, int32_t *agg)
@@ -287,7 +287,8 @@ static int galerkin(struct amg *g, struct level *F, struct level *C, int nc)
         int t = omp_get_thread_num(), nt = omp_get_num_threads();
         if (t == 0)
             nblk = nt;
-        int a = (int)((int64_t)nc * t / nt), b = (int)((int64_t)nc * (t + 1) / nt);
+        int a = (int)((int64_t)nc * t / nt);
+        int b = (int)((int64_t)nc * (t + 1) / nt);
         struct tbuf *B = &g->buf[t];
         int32_t *mark = g->mark + (size_t)t * nc;
         int64_t pos = 0;
@@ -480,7 +481,8 @@ static void cycle(const struct amg *g, int l, const double *r, double *z)
         const struct csr_matrix *Ac = &C->A;
 #pragma omp parallel for schedule(static) if (AMG_PAR(Ac))
         for (int I = 0; I < nc; I++)
-            C->w[I] = C->r[I] - csr_row_dot_f(Ac->rowptr, Ac->col, C->fval, C->z, I);
+            C->w[I] = C->r[I]
+                    - csr_row_dot_f(Ac->rowptr, Ac->col, C->fval, C->z, I);
         cycle(g, l + 1, C->w, C->w2);
 #pragma omp parallel for schedule(static) if (AMG_PAR(Ac))
         for (int I = 0; I < nc; I++)
