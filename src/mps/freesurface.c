@@ -35,7 +35,8 @@
 void mps_free_surface(struct mps_solver *s)
 {
     struct mps_particles *P = &s->P;
-    const struct neighbour_list *nl = &s->nl_in; /* w_n: within r_inner */
+    const struct neighbour_list in = neighbour_inner(&s->nl); /* w_n */
+    const struct neighbour_list *nl = &in;
     const struct mps_settings *S = &s->S;
     const double n0 = s->Ln.n0, f0 = s->Ln.f0, c = P->dim / n0;
     const double *w = s->w_n, *ie = P->inv_eps;

@@ -135,8 +135,6 @@ struct mps_solver {
     /* per-step work (capacity cap) */
     struct cell_grid grid;
     struct neighbour_list nl;
-    struct neighbour_list nl_in; /* view: pairs within the number density
-                                    and gradient radii (mps_weights)   */
     double *w_n, *w_g, *w_l;        /* weights aligned with nl           */
     size_t cap_w;
     double *ustar, *grad, *lap, *div;

@@ -336,7 +336,6 @@ void mps_weights(struct mps_solver *s)
 {
     const struct mps_settings *S = &s->S;
     const double dp = s->dp;
-    s->nl_in = neighbour_inner(&s->nl);
     S->kernel->weights(s->nl.r, s->nl.nnz, S->re_n * dp, s->w_n);
     if (s->w_g != s->w_n)
         S->kernel->weights(s->nl.r, s->nl.nnz, S->re_grad * dp, s->w_g);

@@ -68,7 +68,8 @@ static void predict_positions(struct mps_solver *s, double dt, double sign)
 static void density(struct mps_solver *s)
 {
     struct mps_particles *P = &s->P;
-    mps_number_density(&s->nl_in, s->w_n, P->inv_eps, NULL, P->nd);
+    const struct neighbour_list in = neighbour_inner(&s->nl);
+    mps_number_density(&in, s->w_n, P->inv_eps, NULL, P->nd);
     const double inv_n0 = 1.0 / s->Ln.n0;
 #pragma omp parallel for schedule(static)
     for (int i = 0; i < P->n; i++)
@@ -79,14 +80,15 @@ static void density(struct mps_solver *s)
 static void correct(struct mps_solver *s, double dt)
 {
     struct mps_particles *P = &s->P;
+    const struct neighbour_list in = neighbour_inner(&s->nl);
     if (s->S.gradient == MPS_GRAD_CORRECTED)
-        mps_gradient_corrected(&s->nl_in, s->w_g, P->dim, s->Lg.n0, P->x, P->p,
+        mps_gradient_corrected(&in, s->w_g, P->dim, s->Lg.n0, P->x, P->p,
                                P->inv_eps, s->rows_fluid, s->grad);
     else if (s->S.gradient == MPS_GRAD_PMIN)
-        mps_gradient_pmin(&s->nl_in, s->w_g, P->dim, s->Lg.n0, P->x, P->p,
+        mps_gradient_pmin(&in, s->w_g, P->dim, s->Lg.n0, P->x, P->p,
                           P->inv_eps, s->rows_fluid, s->grad);
     else
-        mps_gradient(&s->nl_in, s->w_g, P->dim, s->Lg.n0, P->x, P->p,
+        mps_gradient(&in, s->w_g, P->dim, s->Lg.n0, P->x, P->p,
                      P->inv_eps, s->rows_fluid, s->grad);
     const double c0 = dt / s->S.rho;
     const double *cs = P->corr_scale; /* Model B: 1/eps_i (eq. 5) */

@@ -141,7 +141,8 @@ static void source(struct mps_solver *s, double dt)
 {
     const struct mps_particles *P = &s->P;
     const double g = s->S.gamma, rho = s->S.rho;
-    mps_divergence(&s->nl_in, s->w_g, P->dim, s->Lg.n0, P->x, s->ustar,
+    const struct neighbour_list in = neighbour_inner(&s->nl);
+    mps_divergence(&in, s->w_g, P->dim, s->Lg.n0, P->x, s->ustar,
                    P->inv_eps, s->rows_ppe, s->div);
 #pragma omp parallel for schedule(static)
     for (int i = 0; i < P->n; i++) {

@@ -29,7 +29,8 @@ static int apply_collision(struct mps_solver *s, double dt)
     (void)dt;
     struct mps_particles *P = &s->P;
     const double rc = s->S.collision_ratio * s->dp;
-    const struct neighbour_list *nl = rc <= s->nl.r_inner ? &s->nl_in : &s->nl;
+    const struct neighbour_list in = neighbour_inner(&s->nl);
+    const struct neighbour_list *nl = rc <= s->nl.r_inner ? &in : &s->nl;
     const double e = s->S.collision_restitution;
     double *du = s->grad; /* free before the correction */
     double *u = s->ustar;
