@@ -103,6 +103,20 @@ int couple_fluid_init(struct couple_fluid *cf, const struct dict *coupling,
     log_info("Coupling: r_e,s = %g m (%g dp), porosity floor %g, pair skin "
              "%g dp%s", cf->re, cf->cs.radius, cf->cs.eps_min, cf->cs.skin,
              cf->dim == 2 ? "; 2-D slab one dp deep" : "");
+    s->S.phi_relax_time = cf->cs.phi_relax;
+    if (cf->cs.phi_relax > 0) {
+        if (P->phi)
+            log_info("Coupling: water content phi/eps relaxed over %g s "
+                     "(volumeFractionRelaxation)", cf->cs.phi_relax);
+        else {
+            char at[512];
+            log_warn("%s: volumeFractionRelaxation %g has no effect: the "
+                     "fluid particles hold no volumeFraction (genParticles "
+                     "grainVolume scale)",
+                     dict_where(coupling, "volumeFractionRelaxation", at,
+                                sizeof at), cf->cs.phi_relax);
+        }
+    }
     return SIM_OK;
 }
 

@@ -70,6 +70,13 @@ int coupling_settings_read(const struct dict *d, struct coupling_settings *s)
         return dict_error(d, "pairSkin", SIM_ERR_DICT,
                           "pairSkin %g (Verlet skin of the grain-particle "
                           "pairs in units of dp) must be >= 0", s->skin);
+    TRY(dict_get_scalar_or(d, "volumeFractionRelaxation", 0.0,
+                           &s->phi_relax));
+    if (!(s->phi_relax >= 0) || !isfinite(s->phi_relax))
+        return dict_error(d, "volumeFractionRelaxation", SIM_ERR_DICT,
+                          "volumeFractionRelaxation %g (relaxation time of "
+                          "the water content phi/eps [s]; 0 = off) must be "
+                          ">= 0", s->phi_relax);
     TRY(dict_get_scalar_or(d, "porosityMin", 0.3, &s->eps_min));
     if (!(s->eps_min > 0 && s->eps_min < 1))
         return dict_error(d, "porosityMin", SIM_ERR_DICT,

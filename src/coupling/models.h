@@ -62,6 +62,8 @@ struct coupling_settings {
     double eps_min;                 /* `porosityMin` (0.3)                */
     int conservative;               /* `conservativeReaction` (no), B only */
     double skin;                    /* `pairSkin` / dp (0): pairs.h update */
+    double phi_relax;               /* `volumeFractionRelaxation` [s] (0:
+                                       off), mps/volume_exchange.c        */
 };
 
 /* Read the entries above; errors cite couplingDict's file and line. */

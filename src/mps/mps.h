@@ -104,6 +104,9 @@ struct mps_settings {
                                     /* moved more than skin/2           */
     /* system/mpsSolution */
     double max_escape_fraction;     /* stop when more have escaped      */
+    /* system/couplingDict (set by the coupling) */
+    double phi_relax_time;          /* volumeFractionRelaxation [s]: 0 =
+                                       phi fixed (volume_exchange.c)    */
 };
 
 /* Wall-clock seconds per phase (accumulated) and the last PPE numbers. */

@@ -12,6 +12,11 @@ int mps_particles_drop_outside(struct mps_solver *s);
  * weights of each operator radius. */
 int mps_neighbours(struct mps_solver *s);
 
+/* Trade water content phi between neighbouring fluid particles towards
+ * a uniform phi/eps (volume_exchange.c); nothing unless phi_relax_time > 0
+ * and the particles hold phi. Uses lap and div as scratch. */
+void mps_volume_exchange(struct mps_solver *s, double dt);
+
 /* Kernel weights of every operator radius from nl.r. */
 void mps_weights(struct mps_solver *s);
 

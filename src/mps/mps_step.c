@@ -3,6 +3,8 @@
  * A.10 steps 1 and 7-11 with eps = 1, no grains):
  *
  *   1. neighbour search (cells of the largest r_e; CSR list; renumbering)
+ *      [coupled, optional: water content traded towards a uniform phi/eps,
+ *      volume_exchange.c]
  *   7. prediction    u* = u^m + dt (nu <lap u^m> + g + f_ext)     eq. (10)
  *      [optional collision model on u*; optional predictor r* = r + dt u*
  *      at which the PPE and the gradient are evaluated (Koshizuka 1996)]
@@ -119,6 +121,7 @@ int mps_step(struct mps_solver *s, double dt)
     s->dt_last = dt;
     TRY(mps_neighbours(s));
     double t1 = omp_get_wtime();
+    mps_volume_exchange(s, dt);
     predict(s, dt);
     TRY(s->S.collision->apply(s, dt));
     if (s->S.predictor)
