@@ -417,6 +417,7 @@ static void test_settings(void **state)
     assert_int_equal(s.model, COUPLING_MODEL_B);
     assert_ptr_equal(s.drag, &drag_ergun_wen_yu);
     assert_true(s.radius == 4.1 && s.eps_min == 0.3 && s.skin == 0);
+    assert_true(s.phi_relax == 0);
     assert_int_equal(read_settings("model A; dragModel gidaspowBlend;\n"
                                    "kernelRadius 3.0; porosityMin 0.25;\n"
                                    "pairSkin 0.3;\n", &s), 0);
@@ -435,6 +436,13 @@ static void test_settings(void **state)
     assert_non_null(strstr(sim_error_message(), "system/couplingDict:1"));
     assert_int_equal(read_settings("pairSkin -0.1;\n", &s), SIM_ERR_DICT);
     assert_non_null(strstr(sim_error_message(), "pairSkin"));
+    assert_int_equal(read_settings("volumeFractionRelaxation 0.005;\n", &s),
+                     0);
+    assert_true(s.phi_relax == 0.005);
+    assert_int_equal(read_settings("\n\nvolumeFractionRelaxation -1;\n", &s),
+                     SIM_ERR_DICT);
+    assert_non_null(strstr(sim_error_message(), "system/couplingDict:3"));
+    assert_non_null(strstr(sim_error_message(), "volumeFractionRelaxation"));
     assert_int_equal(read_settings("kernelRadius -1;\n", &s), SIM_ERR_DICT);
     assert_non_null(strstr(sim_error_message(), "kernelRadius"));
     assert_int_equal(read_settings("\nporosityMin 1.5;\n", &s),
