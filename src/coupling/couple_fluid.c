@@ -189,6 +189,15 @@ int couple_fluid_update(struct couple_fluid *cf, struct mps_solver *s)
     if (P->phi)
         for (int i = 0; i < P->n; i++)
             P->inv_eps[i] *= P->phi[i];
+    /* porousWalls no: a wall or dummy particle stands for dp^d of wall
+     * whatever grains lie near it, so it counts 1 in <n>_i and the
+     * operators, as a fluid particle at phi = eps does (with 1/eps_w the
+     * floor under a bed counts up to twice). Its porosity still scales its
+     * PPE row (Model B) and still feeds the grains' Shepard averages. */
+    if (!cf->cs.porous_walls)
+        for (int i = 0; i < P->n; i++)
+            if (P->type[i] != MPS_FLUID)
+                P->inv_eps[i] = 1.0;
     for (int i = 0; i < P->n; i++)
         cf->mask[i] = P->type[i] != MPS_DUMMY;
     coupling_reaction_input(cf->cs.model, cf->cs.conservative, cf->ng,

@@ -77,6 +77,7 @@ int coupling_settings_read(const struct dict *d, struct coupling_settings *s)
                           "volumeFractionRelaxation %g (relaxation time of "
                           "the water content phi/eps [s]; 0 = off) must be "
                           ">= 0", s->phi_relax);
+    TRY(dict_get_bool_or(d, "porousWalls", 1, &s->porous_walls));
     TRY(dict_get_scalar_or(d, "porosityMin", 0.3, &s->eps_min));
     if (!(s->eps_min > 0 && s->eps_min < 1))
         return dict_error(d, "porosityMin", SIM_ERR_DICT,

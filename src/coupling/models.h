@@ -64,6 +64,9 @@ struct coupling_settings {
     double skin;                    /* `pairSkin` / dp (0): pairs.h update */
     double phi_relax;               /* `volumeFractionRelaxation` [s] (0:
                                        off), mps/volume_exchange.c        */
+    int porous_walls;               /* `porousWalls` (yes, A0-03): wall and
+                                       dummy particles weigh 1/eps_j in the
+                                       MPS sums; no: they weigh 1         */
 };
 
 /* Read the entries above; errors cite couplingDict's file and line. */
