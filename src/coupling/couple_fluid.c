@@ -93,12 +93,18 @@ int couple_fluid_init(struct couple_fluid *cf, const struct dict *coupling,
             P->corr_scale = malloc((size_t)cap * sizeof *P->corr_scale + 64);
         if (!P->ppe_scale || !P->corr_scale)
             return SIM_ERR_NOMEM;
+        if (cf->cs.superficial && !P->div_weight
+            && !(P->div_weight = malloc((size_t)cap * sizeof *P->div_weight
+                                        + 64)))
+            return SIM_ERR_NOMEM;
     }
     for (int i = 0; i < cap; i++) {
         P->inv_eps[i] = 1.0;
         cf->eps[i] = 1.0;
         if (P->ppe_scale)
             P->ppe_scale[i] = P->corr_scale[i] = 1.0;
+        if (P->div_weight)
+            P->div_weight[i] = 1.0;
     }
     log_info("Coupling: r_e,s = %g m (%g dp), porosity floor %g, pair skin "
              "%g dp%s", cf->re, cf->cs.radius, cf->cs.eps_min, cf->cs.skin,
@@ -214,6 +220,8 @@ int couple_fluid_update(struct couple_fluid *cf, struct mps_solver *s)
         coupling_correction_factor(cf->cs.model, P->n, cf->eps,
                                    P->corr_scale);
     }
+    if (P->div_weight)
+        memcpy(P->div_weight, cf->eps, (size_t)P->n * sizeof *cf->eps);
     cf->wall += app_wall_time() - t0;
     return SIM_OK;
 }

@@ -64,6 +64,8 @@ struct coupling_settings {
     double skin;                    /* `pairSkin` / dp (0): pairs.h update */
     double phi_relax;               /* `volumeFractionRelaxation` [s] (0:
                                        off), mps/volume_exchange.c        */
+    int superficial;                /* `ppeDivergence superficial` (B only):
+                                       (rho/dt) div(eps u*), A0-04 (b)    */
     int porous_walls;               /* `porousWalls` (yes, A0-03): wall and
                                        dummy particles weigh 1/eps_j in the
                                        MPS sums; no: they weigh 1         */

@@ -72,6 +72,10 @@ struct mps_particles {
                            eps_i, eq. 13)                                */
     double *corr_scale; /* NULL or n factors of the pressure correction
                            dt/rho grad P (Model B: 1/eps_i, eq. 5)       */
+    double *div_weight; /* NULL or n factors s_j: the PPE's divergence
+                           term is taken of s u* and ppe_scale scales
+                           only its density term (Model B with
+                           ppeDivergence superficial: s = eps, A0-04 b) */
     double *phi;      /* NULL or n fluid volume fractions: particle i
                          holds phi_i dp^d of fluid (genParticles
                          grainVolume scale); the coupling then weighs
