@@ -30,11 +30,15 @@
  * A's form (12) drops grad eps . grad P against eps u*'s own gradient
  * term, and both vanish at rest: (12) is hydrostatic. B's literal form
  * eps_i (rho/dt) div u* is not: at rest it gives lap P = -rho g . grad
- * eps/eps, so the pressure gradient below a bed top grows to about
- * rho g (1 - ln eps) (1.4-1.5 rho g in the 5 mm sedimentation bed,
- * +21 % on the floor). `ppeDivergence superficial;` (B only) takes the
- * divergence of eps u* (A0-04 (b)) and keeps eps_i on the density term;
- * for a uniform eps the two forms are the same.
+ * eps/eps, which bends the pressure profile across a bed top by
+ * rho g ln(eps_above/eps_below) in its slope; with the floor's
+ * no-penetration condition (grad P = rho g there in both forms) the floor
+ * pressure comes out wrong by a third one step from rest in a tank half
+ * filled by a bed of eps 0.5 (test_step), and the 5 mm sedimentation case
+ * settles with 1.5 rho g in the bed, +21 % on the floor.
+ * `ppeDivergence superficial;` (B only) takes the divergence of eps u*
+ * (A0-04 (b)) and keeps eps_i on the density term; for a uniform eps the
+ * two forms are the same.
  *
  * Momentum: with fluid mass rho eps_i V_i per particle, Model A's exchange
  * sum_i rho eps_i V_i a_A,i = -sum_i V_i f_A,i = -sum_k F_bar_k is exact

@@ -418,6 +418,7 @@ static void test_settings(void **state)
     assert_ptr_equal(s.drag, &drag_ergun_wen_yu);
     assert_true(s.radius == 4.1 && s.eps_min == 0.3 && s.skin == 0);
     assert_true(s.phi_relax == 0 && s.porous_walls == 1);
+    assert_int_equal(s.superficial, 0);
     assert_int_equal(read_settings("model A; dragModel gidaspowBlend;\n"
                                    "kernelRadius 3.0; porosityMin 0.25;\n"
                                    "pairSkin 0.3;\n", &s), 0);
@@ -439,6 +440,11 @@ static void test_settings(void **state)
     assert_int_equal(read_settings("volumeFractionRelaxation 0.005;\n", &s),
                      0);
     assert_true(s.phi_relax == 0.005);
+    assert_int_equal(read_settings("ppeDivergence superficial;\n", &s), 0);
+    assert_int_equal(s.superficial, 1);
+    assert_int_equal(read_settings("model A; ppeDivergence superficial;\n",
+                                   &s), SIM_ERR_DICT);
+    assert_non_null(strstr(sim_error_message(), "ppeDivergence"));
     assert_int_equal(read_settings("porousWalls no;\n", &s), 0);
     assert_int_equal(s.porous_walls, 0);
     assert_int_equal(read_settings("porousWalls maybe;\n", &s), SIM_ERR_DICT);
