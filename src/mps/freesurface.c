@@ -9,8 +9,10 @@
  * A fluid particle is on the surface if (14) holds, or if (16) holds and
  * <n>_i < fs_n_max n0 (0.97). |F0| is |F| of a particle on a flat surface of
  * the initial lattice (A0-06: the seed's "internal particle" would be 0).
- * Inside a porous region (eps_i < 1, coupled runs) only (14) applies, with
- * its own threshold betaPorous (default 0.8, the paper's beta): there the
+ * Inside a porous region (eps_i < 1, coupled runs; eps_i = phi_i/a_i from
+ * the weight a_i = phi_i/eps_i the coupling puts in inv_eps, phi_i = 1
+ * without volume fractions) only (14) applies, with its own threshold
+ * betaPorous (default 0.8, the paper's beta): there the
  * neighbour weights 1/eps_j (or phi_j/eps_j) change as the grains move,
  * <n>_i wanders a few per cent about n0 and the neighbourhoods lose their
  * symmetry; (16), or a beta close to 1 as the tutorials use for still
@@ -39,13 +41,13 @@ void mps_free_surface(struct mps_solver *s)
     const struct neighbour_list *nl = &in;
     const struct mps_settings *S = &s->S;
     const double n0 = s->Ln.n0, f0 = s->Ln.f0, c = P->dim / n0;
-    const double *w = s->w_n, *ie = P->inv_eps;
+    const double *w = s->w_n, *ie = P->inv_eps, *phi = P->phi;
 #pragma omp parallel for schedule(static)
     for (int i = 0; i < P->n; i++) {
         uint8_t flag = MPS_INNER;
         double nd = P->nd[i];
         if (P->type[i] == MPS_FLUID) {
-            if (ie && ie[i] > 1.0) {
+            if (ie && ie[i] > (phi ? phi[i] : 1.0)) {   /* eps_i < 1 */
                 if (nd < S->beta_porous)
                     flag = MPS_SURFACE;
             } else if (nd < S->beta) {

@@ -304,6 +304,44 @@ static void test_superficial_divergence(void **st)
     mps_solver_free(&sup);
 }
 
+/* Free-surface test inside a porous region (freesurface.c): eps_i < 1
+ * takes betaPorous only, whether eps reaches the solver as 1/eps
+ * (inv_eps = 2 in the lower half) or as phi/eps with the particles
+ * holding phi = eps (inv_eps = 1, phi = 0.5: genParticles grainVolume
+ * scale). At n = 0.85 n0 everywhere the lower half stays inner
+ * (betaPorous 0.8) and the upper half is surface (beta 0.97). */
+static void test_porous_surface_test(void **st)
+{
+    (void)st;
+    log_set_quiet(1);
+    for (int with_phi = 0; with_phi < 2; with_phi++) {
+        struct mps_solver s;
+        make_solver(&s, "cholmod", "none");
+        struct mps_particles *P = &s.P;
+        P->inv_eps = malloc((size_t)P->cap * sizeof *P->inv_eps);
+        assert_non_null(P->inv_eps);
+        if (with_phi) {
+            P->phi = malloc((size_t)P->cap * sizeof *P->phi);
+            assert_non_null(P->phi);
+        }
+        for (int i = 0; i < P->n; i++) {
+            int bed = P->x[3 * i + 1] < NY * DP / 2;
+            P->inv_eps[i] = bed && !with_phi ? 2.0 : 1.0;
+            if (with_phi)
+                P->phi[i] = bed ? 0.5 : 1.0;
+            P->nd[i] = 0.85;
+        }
+        mps_free_surface(&s);
+        int wrong = 0;
+        for (int i = 0; i < P->n; i++)
+            if (P->type[i] == MPS_FLUID)
+                wrong += (P->fs[i] == MPS_SURFACE)
+                      != (P->x[3 * i + 1] >= NY * DP / 2);
+        assert_int_equal(wrong, 0);
+        mps_solver_free(&s);
+    }
+}
+
 /* porousLaplacian: with a porosity that varies over the tank, the PPE
  * matrix of the 1/eps_j weights (eq. 10 as printed) is not symmetric, that
  * of the pair weight 2/(eps_i + eps_j) is, and PCG on it gives CHOLMOD's
@@ -457,6 +495,7 @@ int main(void)
         cmocka_unit_test(test_pcg_vs_cholmod),
         cmocka_unit_test(test_scale_hooks),
         cmocka_unit_test(test_superficial_divergence),
+        cmocka_unit_test(test_porous_surface_test),
         cmocka_unit_test(test_porous_symmetric),
         cmocka_unit_test(test_row_mask),
         cmocka_unit_test(test_escape),
