@@ -9,10 +9,8 @@
  * A fluid particle is on the surface if (14) holds, or if (16) holds and
  * <n>_i < fs_n_max n0 (0.97). |F0| is |F| of a particle on a flat surface of
  * the initial lattice (A0-06: the seed's "internal particle" would be 0).
- * Inside a porous region (eps_i < 1, coupled runs; eps_i = phi_i/a_i from
- * the weight a_i = phi_i/eps_i the coupling puts in inv_eps, phi_i = 1
- * without volume fractions) only (14) applies, with its own threshold
- * betaPorous (default 0.8, the paper's beta): there the
+ * Inside a porous region (eps_i < 1, coupled runs) only (14) applies, with
+ * its own threshold betaPorous (default 0.8, the paper's beta): there the
  * neighbour weights 1/eps_j (or phi_j/eps_j) change as the grains move,
  * <n>_i wanders a few per cent about n0 and the neighbourhoods lose their
  * symmetry; (16), or a beta close to 1 as the tutorials use for still
@@ -20,6 +18,16 @@
  * settling bed of 2.7 mm beads at dp = 5 mm), each a Dirichlet p = 0 that
  * drains the pressure of the whole column. A real surface there still has
  * <n> well below n0.
+ * With volume fractions (genParticles grainVolume scale) inv_eps holds
+ * phi_i/eps_i, about 1 in a bed: the porous branch is then taken only
+ * where a particle holds more water than its pores (phi > eps, a bed
+ * compacting around it), and the rest of a bed takes (14) with beta and
+ * (16). Taking betaPorous wherever eps < 1 instead (eps = phi/inv_eps) was
+ * tried on the sedimentation case at dp = 2.7 mm (2026-11-21): while the
+ * bed falls onto the floor (0.02-0.1 s) the flags that beta = 0.97 puts
+ * in the torn-up bed relieve the pressure; without them the water column
+ * rang for longer (floor pressure 1066 +- 1132 Pa over 0.08-0.1 s against
+ * 1093 +- 56 Pa), so the test stays as it is.
  * Wall particles are never free surface; a wall particle with no fluid
  * neighbour within the number-density radius is "dry" and gets p = 0 too,
  * so that the PPE does not carry the whole dry tank wall (whose rows would
@@ -41,13 +49,13 @@ void mps_free_surface(struct mps_solver *s)
     const struct neighbour_list *nl = &in;
     const struct mps_settings *S = &s->S;
     const double n0 = s->Ln.n0, f0 = s->Ln.f0, c = P->dim / n0;
-    const double *w = s->w_n, *ie = P->inv_eps, *phi = P->phi;
+    const double *w = s->w_n, *ie = P->inv_eps;
 #pragma omp parallel for schedule(static)
     for (int i = 0; i < P->n; i++) {
         uint8_t flag = MPS_INNER;
         double nd = P->nd[i];
         if (P->type[i] == MPS_FLUID) {
-            if (ie && ie[i] > (phi ? phi[i] : 1.0)) {   /* eps_i < 1 */
+            if (ie && ie[i] > 1.0) {
                 if (nd < S->beta_porous)
                     flag = MPS_SURFACE;
             } else if (nd < S->beta) {
