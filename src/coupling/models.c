@@ -34,8 +34,9 @@
  * rho g ln(eps_above/eps_below) in its slope; with the floor's
  * no-penetration condition (grad P = rho g there in both forms) the floor
  * pressure comes out wrong by a third one step from rest in a tank half
- * filled by a bed of eps 0.5 (test_step), and the 5 mm sedimentation case
- * settles with 1.5 rho g in the bed, +21 % on the floor.
+ * filled by a bed of eps 0.5 (test_step); in the settled 5 mm
+ * sedimentation case it is one of three causes of a floor pressure 21 %
+ * too high (tutorials/mpsDem/multipleParticleSedimentation/README.md).
  * `ppeDivergence superficial;` (B only) takes the divergence of eps u*
  * (A0-04 (b)) and keeps eps_i on the density term; for a uniform eps the
  * two forms are the same.

@@ -10,10 +10,8 @@
  * compacts, eps moves under particles whose phi does not: particles that
  * held pore water end in clear water holding half a particle's water, and
  * particles left in the compacted bed hold more than its pores do. a then
- * ranges over 0.5-1.4 (dp = 2.7 mm sedimentation), the number density of
- * the PPE wanders with it (0.85-0.95 n0 deep in the tank: flagged free
- * surface, p = 0 holes), and the (p_i + p_j) gradient of eq. 8 is
- * inconsistent wherever a varies.
+ * ranges over 0.6-1.4 (dp = 2.7 mm sedimentation), the number density of
+ * the PPE wanders with it, and so do the operators' weights.
  *
  * Water is not bound to a particle, so neighbours trade it towards a
  * uniform a, conserving the water volume and its momentum:
