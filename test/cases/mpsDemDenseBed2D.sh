@@ -16,9 +16,10 @@
 #   the submerged weight. (With `fill`, the default, the same bed throws
 #   24 of its 200 fluid particles out of the tank in the first 4 steps.)
 # All of it again with the sedimentation tutorial's still-bed settings
-# (ppeDivergence superficial, porousWalls no, volumeFractionRelaxation
-# 0.005 s; checks named denseBed2D_stillBed_*): the fluid volume then
-# constant to 1e-12 (the water the particles trade sums to round-off).
+# (ppeDivergence superficial, porousWalls no) and the water exchange on
+# (volumeFractionRelaxation 0.005 s; checks named denseBed2D_stillBed_*):
+# the fluid volume then constant to 1e-12 (the water the particles trade
+# sums to round-off), and a restart repeats the exchange.
 # MPSFLUID / DEMSOLID override the programs (default bin/).
 NAME=mpsDemDenseBed2D
 . "$(dirname "$0")/lib/tandem.sh"
@@ -123,9 +124,9 @@ EOD
     fi
 }
 dense_bed B "" "" 0
-# The settings of tutorials/mpsDem/multipleParticleSedimentation: the
-# water content traded between particles (src/mps/volume_exchange.c) keeps
-# sum phi to round-off only, and the restart must repeat it too.
+# The still-bed settings of tutorials/mpsDem/multipleParticleSedimentation
+# with the water exchange (src/mps/volume_exchange.c), which keeps sum phi
+# to round-off only; the restart must repeat it too.
 dense_bed stillBed "ppeDivergence superficial;\nporousWalls no;\nvolumeFractionRelaxation 0.005;\n" _stillBed 1e-12
 c="$TMP/B"
 # the same particles in a run without coupling: refused, with the reason
