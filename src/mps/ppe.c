@@ -164,8 +164,10 @@ static void source(struct mps_solver *s, double dt)
             continue;
         double dn = P->nd[i] - 1.0;
         double sd = P->ppe_scale ? P->ppe_scale[i] : 1.0; /* B: eps_i (13) */
-        double rhs = (1 - g) * rho / dt * s->div[i] * (dw ? 1.0 : sd)
-                   - g * rho / (dt * dt) * dn * sd;
+        double rhs = dw ? (1 - g) * rho / dt * s->div[i]
+                          - g * rho / (dt * dt) * dn * sd
+                        : ((1 - g) * rho / dt * s->div[i]
+                           - g * rho / (dt * dt) * dn) * sd;
         s->b[r] -= rhs;
         s->sol[r] = P->p[i];
     }
