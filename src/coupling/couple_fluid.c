@@ -93,23 +93,18 @@ int couple_fluid_init(struct couple_fluid *cf, const struct dict *coupling,
             P->corr_scale = malloc((size_t)cap * sizeof *P->corr_scale + 64);
         if (!P->ppe_scale || !P->corr_scale)
             return SIM_ERR_NOMEM;
-        if (cf->cs.superficial && !P->div_weight
-            && !(P->div_weight = malloc((size_t)cap * sizeof *P->div_weight
-                                        + 64)))
-            return SIM_ERR_NOMEM;
     }
     for (int i = 0; i < cap; i++) {
         P->inv_eps[i] = 1.0;
         cf->eps[i] = 1.0;
         if (P->ppe_scale)
             P->ppe_scale[i] = P->corr_scale[i] = 1.0;
-        if (P->div_weight)
-            P->div_weight[i] = 1.0;
     }
     log_info("Coupling: r_e,s = %g m (%g dp), porosity floor %g, pair skin "
              "%g dp%s", cf->re, cf->cs.radius, cf->cs.eps_min, cf->cs.skin,
              cf->dim == 2 ? "; 2-D slab one dp deep" : "");
     s->S.phi_relax_time = cf->cs.phi_relax;
+    s->S.scaled_divergence = cf->cs.superficial;
     if (cf->cs.phi_relax > 0) {
         if (P->phi)
             log_info("Coupling: water content phi/eps relaxed over %g s "
@@ -192,18 +187,16 @@ int couple_fluid_update(struct couple_fluid *cf, struct mps_solver *s)
     /* Particles that hold phi_i dp^d of fluid (genParticles grainVolume
      * scale) count phi_j/eps_j in every neighbour sum (eq. 7 and the
      * operators), so that a packed bed starts at <n> = n0. */
-    if (P->phi)
-        for (int i = 0; i < P->n; i++)
-            P->inv_eps[i] *= P->phi[i];
     /* porousWalls no: a wall or dummy particle stands for dp^d of wall
      * whatever grains lie near it, so it counts 1 in <n>_i and the
      * operators, as a fluid particle at phi = eps does (with 1/eps_w the
      * floor under a bed counts up to twice). Its porosity still scales its
      * PPE row (Model B) and still feeds the grains' Shepard averages. */
-    if (!cf->cs.porous_walls)
-        for (int i = 0; i < P->n; i++)
-            if (P->type[i] != MPS_FLUID)
-                P->inv_eps[i] = 1.0;
+    for (int i = 0; i < P->n; i++)
+        if (!cf->cs.porous_walls && P->type[i] != MPS_FLUID)
+            P->inv_eps[i] = 1.0;
+        else if (P->phi)
+            P->inv_eps[i] *= P->phi[i];
     for (int i = 0; i < P->n; i++)
         cf->mask[i] = P->type[i] != MPS_DUMMY;
     coupling_reaction_input(cf->cs.model, cf->cs.conservative, cf->ng,
@@ -220,8 +213,6 @@ int couple_fluid_update(struct couple_fluid *cf, struct mps_solver *s)
         coupling_correction_factor(cf->cs.model, P->n, cf->eps,
                                    P->corr_scale);
     }
-    if (P->div_weight)
-        memcpy(P->div_weight, cf->eps, (size_t)P->n * sizeof *cf->eps);
     cf->wall += app_wall_time() - t0;
     return SIM_OK;
 }

@@ -34,8 +34,8 @@
  * Model B's PPE source factor s_i = eps_i (13) and correction factor
  * c_i = 1/eps_i (the 1/eps of eq. 5 on the intrinsic velocity) go into
  * the solver's ppe_scale and corr_scale hooks, allocated for Model B only;
- * with `ppeDivergence superficial;` eps_i also goes into div_weight (the
- * PPE takes the divergence of eps u*, models.c).
+ * with `ppeDivergence superficial;` the solver's scaled_divergence is set
+ * (the PPE takes the divergence of eps u*, models.c).
  */
 #ifndef MPSDEM_COUPLING_COUPLE_FLUID_H
 #define MPSDEM_COUPLING_COUPLE_FLUID_H

@@ -72,10 +72,6 @@ struct mps_particles {
                            eps_i, eq. 13)                                */
     double *corr_scale; /* NULL or n factors of the pressure correction
                            dt/rho grad P (Model B: 1/eps_i, eq. 5)       */
-    double *div_weight; /* NULL or n factors s_j: the PPE's divergence
-                           term is taken of s u* and ppe_scale scales
-                           only its density term (Model B with
-                           ppeDivergence superficial: s = eps, A0-04 b) */
     double *phi;      /* NULL or n fluid volume fractions: particle i
                          holds phi_i dp^d of fluid (genParticles
                          grainVolume scale); the coupling then weighs
@@ -111,6 +107,11 @@ struct mps_settings {
     /* system/couplingDict (set by the coupling) */
     double phi_relax_time;          /* volumeFractionRelaxation [s]: 0 =
                                        phi fixed (volume_exchange.c)    */
+    int scaled_divergence;          /* ppeDivergence superficial: the
+                                       PPE's divergence term is taken of
+                                       ppe_scale u* (Model B: eps u*,
+                                       A0-04 b) and ppe_scale scales only
+                                       its density term                 */
 };
 
 /* Wall-clock seconds per phase (accumulated) and the last PPE numbers. */

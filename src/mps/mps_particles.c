@@ -43,7 +43,6 @@ void mps_particles_free(struct mps_particles *P)
     free(P->type); free(P->patch); free(P->id); free(P->partner);
     free(P->nd); free(P->fs); free(P->inv_eps); free(P->f_ext);
     free(P->ppe_scale); free(P->corr_scale); free(P->phi);
-    free(P->div_weight);
     memset(P, 0, sizeof *P);
 }
 
@@ -72,8 +71,6 @@ void mps_particles_permute(struct mps_solver *s, const int32_t *perm, int n)
         cells_permute(P->corr_scale, sizeof *P->corr_scale, perm, n, scr);
     if (P->phi)
         cells_permute(P->phi, sizeof *P->phi, perm, n, scr);
-    if (P->div_weight)
-        cells_permute(P->div_weight, sizeof *P->div_weight, perm, n, scr);
     /* The PPE warm start lives in p; partner indices must follow. */
     for (int i = 0; i < nold; i++)
         s->inv[i] = -1;

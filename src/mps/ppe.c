@@ -22,8 +22,9 @@
  * iteration of BiCGSTAB's two products. The two agree where eps varies
  * slowly over r_e. The warm start is the pressure of the previous step.
  * Coupling hooks: ppe_scale s_i multiplies the source (Model B: eps_i,
- * eq. 13); with div_weight the divergence term is <div(s u*)>_i instead
- * and s_i multiplies the density term only (A0-04 (b), models.c).
+ * eq. 13); with scaled_divergence set the divergence term is
+ * <div(s u*)>_i instead and s_i multiplies the density term only (A0-04
+ * (b), models.c).
  */
 #include <math.h>
 #include <omp.h>
@@ -145,14 +146,15 @@ static void source(struct mps_solver *s, double dt)
     const struct mps_particles *P = &s->P;
     const double g = s->S.gamma, rho = s->S.rho;
     const struct neighbour_list in = neighbour_inner(&s->nl);
-    const double *u = s->ustar, *dw = P->div_weight;
+    const double *u = s->ustar, *sc = P->ppe_scale;
+    const int dw = s->S.scaled_divergence && sc;
     if (dw) {
         /* the prediction is done with lap: s u* goes there */
         double *su = s->lap;
 #pragma omp parallel for schedule(static)
         for (int i = 0; i < P->n; i++)
             for (int q = 0; q < 3; q++)
-                su[3 * i + q] = dw[i] * s->ustar[3 * i + q];
+                su[3 * i + q] = sc[i] * s->ustar[3 * i + q];
         u = su;
     }
     mps_divergence(&in, s->w_g, P->dim, s->Lg.n0, P->x, u, P->inv_eps,
@@ -163,7 +165,7 @@ static void source(struct mps_solver *s, double dt)
         if (r < 0)
             continue;
         double dn = P->nd[i] - 1.0;
-        double sd = P->ppe_scale ? P->ppe_scale[i] : 1.0; /* B: eps_i (13) */
+        double sd = sc ? sc[i] : 1.0; /* B: eps_i (13) */
         double rhs = dw ? (1 - g) * rho / dt * s->div[i]
                           - g * rho / (dt * dt) * dn * sd
                         : ((1 - g) * rho / dt * s->div[i]

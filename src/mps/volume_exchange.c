@@ -49,9 +49,6 @@ void mps_volume_exchange(struct mps_solver *s, double dt)
     double *phi_new = s->div, *u_new = s->lap;
 #pragma omp parallel for schedule(static)
     for (int i = 0; i < P->n; i++) {
-        phi_new[i] = phi[i];
-        for (int q = 0; q < 3; q++)
-            u_new[3 * i + q] = u[3 * i + q];
         if (P->type[i] != MPS_FLUID)
             continue;
         const double eps_i = phi[i] / a[i];

@@ -237,7 +237,7 @@ static void test_scale_hooks(void **st)
  * the hooks of Model B (ppe_scale eps, corr_scale 1/eps, f_ext g(1/eps -
  * 1)), gamma = 0 so that only the divergence term drives the PPE, no
  * predictor. With
- * div_weight = eps the PPE sees div(eps u*) = div(g dt): the pressure of
+ * scaled_divergence the PPE sees div(eps u*) = div(g dt): the pressure of
  * the same tank without grains, to round-off. The literal eps div u*
  * gives lap P = -rho g . grad eps/eps at rest, which bends the profile
  * across the bed top: the floor pressure is off by more than 20 %
@@ -261,9 +261,8 @@ static void bed_step(struct mps_solver *s, int hooks, int superficial)
         P->ppe_scale = malloc(c * sizeof(double));
         P->corr_scale = malloc(c * sizeof(double));
         P->f_ext = calloc(3 * c, sizeof(double));
-        P->div_weight = superficial ? malloc(c * sizeof(double)) : NULL;
+        s->S.scaled_divergence = superficial;
         assert_true(P->inv_eps && P->ppe_scale && P->corr_scale && P->f_ext);
-        assert_true(!superficial || P->div_weight);
         for (int i = 0; i < P->n; i++) {
             double e = bed_eps(P->x[3 * i + 1]);
             P->inv_eps[i] = 1.0;
@@ -271,8 +270,6 @@ static void bed_step(struct mps_solver *s, int hooks, int superficial)
             P->corr_scale[i] = 1.0 / e;
             if (P->type[i] == MPS_FLUID)
                 P->f_ext[3 * i + 1] = -9.81 * (1.0 / e - 1.0);
-            if (superficial)
-                P->div_weight[i] = e;
         }
     }
     assert_int_equal(mps_step(s, 5e-4), 0);
