@@ -13,7 +13,7 @@ fails=0
 pass() { echo "PASS $1"; }
 fail() { echo "FAIL $1: $2"; fails=$((fails + 1)); }
 [ -x "$ROOT/bin/mpsFluid" ] || { fail damBreak2D "bin/mpsFluid not built"; exit 1; }
-[ -d "$ROOT/../shared/data/martin_moyce_1952" ] || { fail damBreak2D "data missing"; exit 1; }
+[ -d "$ROOT/data/martin_moyce_1952" ] || { fail damBreak2D "data missing"; exit 1; }
 c="$TMP/case"
 cp -r "$TUT" "$c"
 if (cd "$c" && "$ROOT/bin/genParticles" > log.genParticles 2>&1 \

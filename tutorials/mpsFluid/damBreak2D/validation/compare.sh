@@ -9,13 +9,13 @@
 # entry `column` at the back wall (postProcessing/column/0/waveGauges.dat,
 # already the surface: top particle + dp/2). SHIFT (default 0) is added to the simulated T, tau
 # (the experiment's release is not instantaneous; README of the data).
-# Prints "rmsZ value", "rmsH value", "nZ n", "nH n". Data read in place
-# from ../shared/data/martin_moyce_1952.
+# Prints "rmsZ value", "rmsH value", "nZ n", "nH n". Data: the repository's
+# data/martin_moyce_1952 (see its README).
 set -e
 CASE=${1:-.}
 SHIFT=${2:-0}
 ROOT="${MPSDEM_DIR:-$(cd "$(dirname "$0")/../../../.." && pwd)}"   # MPSDEM_DIR for a copied case
-DATA="$ROOT/../shared/data/martin_moyce_1952"
+DATA="$ROOT/data/martin_moyce_1952"
 A=0.05715
 G=9.81
 F="$CASE/postProcessing/surge/0/front.dat"

@@ -1,8 +1,9 @@
 # plot.gp — surge front Z(T) and column height H(tau) of damBreak2D against
-# Martin & Moyce (1952). Run from the case directory:
-#   gnuplot -e "data='../../../../shared/data/martin_moyce_1952'" validation/plot.gp
-# (the default `data` assumes the case sits in tutorials/mpsFluid/).
-if (!exists("data")) data = '../../../../shared/data/martin_moyce_1952'
+# Martin & Moyce (1952). Run from the case directory: gnuplot validation/plot.gp
+# The data are the repository's data/martin_moyce_1952: $MPSDEM_DIR/data/...
+# (set by bin/tools/RunFunctions), else the case is taken to sit in
+# tutorials/mpsFluid/ of the repository; -e "data='DIR'" overrides both.
+if (!exists("data")) data = system("echo ${MPSDEM_DIR:-../../..}")."/data/martin_moyce_1952"
 if (!exists("shift")) shift = 0
 a = 0.05715; g = 9.81
 # the front is the centre of the leading particle: its edge is dp/2 further

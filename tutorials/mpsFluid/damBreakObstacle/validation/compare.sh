@@ -1,7 +1,7 @@
 #!/bin/sh
 # compare.sh CASE — damBreakObstacle against the MARIN measurements
-# (../shared/data/kleefsman_spheric2/spheric_test2_marin_exp.csv, whose H1
-# and H3 columns are already relabelled, see the data README):
+# (the repository's data/kleefsman_spheric2/spheric_test2_marin_exp.csv,
+# whose H1 and H3 columns are already relabelled, see the data README):
 #   rmsH1..rmsH4  RMS of simulated - measured water height over 0 <= t <= 6 s,
 #                 at the simulated sample times (measurements interpolated)
 #   P1peak        first pressure peak at P1 (max over 0.3-0.8 s) [Pa] and its
@@ -9,7 +9,7 @@
 set -e
 CASE=${1:-.}
 ROOT="${MPSDEM_DIR:-$(cd "$(dirname "$0")/../../../.." && pwd)}"   # MPSDEM_DIR for a copied case
-EXP="$ROOT/../shared/data/kleefsman_spheric2/spheric_test2_marin_exp.csv"
+EXP="$ROOT/data/kleefsman_spheric2/spheric_test2_marin_exp.csv"
 # a restarted run writes postProcessing/<name>/<startTime>/: join them in time order
 TMP="$(mktemp -d)"; trap 'rm -rf "$TMP"' EXIT
 join_fo() { for d in $(ls "$CASE/postProcessing/$1" 2>/dev/null | sort -g); do cat "$CASE/postProcessing/$1/$d/$2"; done; }

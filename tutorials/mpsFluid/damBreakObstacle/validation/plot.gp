@@ -1,7 +1,9 @@
 # plot.gp — damBreakObstacle against the MARIN measurements: H1-H4 and P1.
 # Run from the case directory: gnuplot validation/plot.gp
-# (`data` defaults to the shared data seen from tutorials/mpsFluid/<case>).
-if (!exists("data")) data = '../../../../shared/data/kleefsman_spheric2'
+# The data are the repository's data/kleefsman_spheric2: $MPSDEM_DIR/data/...
+# (set by bin/tools/RunFunctions), else the case is taken to sit in
+# tutorials/mpsFluid/ of the repository; -e "data='DIR'" overrides both.
+if (!exists("data")) data = system("echo ${MPSDEM_DIR:-../../..}")."/data/kleefsman_spheric2"
 exp = data.'/spheric_test2_marin_exp.csv'
 # a restarted run writes postProcessing/<name>/<startTime>/: join them
 fo(n, f) = sprintf("< for d in $(ls postProcessing/%s | sort -g); do cat postProcessing/%s/$d/%s; done", n, n, f)
