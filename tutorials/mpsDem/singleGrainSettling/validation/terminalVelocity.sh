@@ -8,22 +8,13 @@
 # test_couple_glue.c prints it). Usage: validation/terminalVelocity.sh [t0]
 cd "${0%/*}/.." || exit 1
 t0=${1:-0.2}
-validation/grainHistory.sh | awk -v t0="$t0" '
-function slip(e,  lo, hi, s, Re, cds, K, i) {
-    lo = 0; hi = 2
-    for (i = 0; i < 100; i++) {
-        s = (lo + hi) / 2; Re = e * 1000 * 0.0027 * s / 1e-3
-        cds = Re > 1000 ? 0.44 * s : 24e-3 * (1 + 0.15 * Re^0.687) / (e * 1000 * 0.0027)
-        K = 0.75 * cds * 1000 * e^-1.65 / 0.0027
-        if (K * s / e > 1500 * 9.81) hi = s; else lo = s
-    }
-    return s
-}
+b1=$(awk -v e=1.0 -f validation/balanceSlip.awk)      # drag law: balanceSlip.awk
+b2=$(awk -v e=0.9883 -f validation/balanceSlip.awk)
+validation/grainHistory.sh | awk -v t0="$t0" -v b1="$b1" -v b2="$b2" '
 $1 >= t0 { s += $5; s2 += $5 * $5; n++ }
 END {
     if (n < 2) { print "no data after t0 = " t0; exit 1 }
     m = -s / n; sd = sqrt(s2 / n - m * m)
-    b1 = slip(1.0); b2 = slip(0.9883)
     printf "grain speed after %s s: mean %.4f m/s, std %.4f m/s (%d samples)\n", t0, m, sd, n
     printf "balance slip at eps_k = 1:      %.4f m/s  (mean speed %+.2f %%)\n", b1, 100 * (m / b1 - 1)
     printf "balance slip at eps_k = 0.9883: %.4f m/s  (mean speed %+.2f %%)\n", b2, 100 * (m / b2 - 1)
