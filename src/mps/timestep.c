@@ -63,7 +63,11 @@ static double fluid_height(const struct mps_particles *P)
 
 /* Wall particles whose wall+dummy layers behind them (along the normal)
  * are thinner than ceil(r_e/dp) - 1 layers (on the list of the start,
- * where every wall particle has its row). */
+ * where every wall particle has its row). Along a diagonal normal the
+ * lattice points behind a particle are sqrt(2) or sqrt(3) dp apart, so at
+ * a tank corner the next layer can lie beyond r_e although every layer
+ * the kernel reaches is there: the wall is full when the next point along
+ * the line (depth + the spacing of the points on it) is outside r_e. */
 int mps_thin_walls(const struct mps_solver *s)
 {
     const struct mps_particles *P = &s->P;
@@ -74,7 +78,7 @@ int mps_thin_walls(const struct mps_solver *s)
         if (P->type[i] != MPS_WALL)
             continue;
         const double *n = P->normal + 3 * i;
-        double depth = 0;
+        double depth = 0, step = INFINITY;
         for (int64_t k = nl->start[i]; k < nl->start[i + 1]; k++) {
             int j = nl->j[k];
             if (P->type[j] == MPS_FLUID)
@@ -86,10 +90,13 @@ int mps_thin_walls(const struct mps_solver *s)
             }
             for (int q = 0; q < 3; q++)
                 b += pow(d[q] - a * n[q], 2);
-            if (b < 0.25 * s->dp * s->dp)
+            if (b < 0.25 * s->dp * s->dp && a > 0) {
                 depth = fmax(depth, a);
+                step = fmin(step, a);
+            }
         }
-        bad += depth < (need - 0.5) * s->dp;
+        bad += depth < (need - 0.5) * s->dp
+               && !(depth > 0 && depth + step > s->re_max);
     }
     return bad;
 }

@@ -429,6 +429,47 @@ static void test_row_mask(void **st)
     mps_solver_free(&b);
 }
 
+/* The thin-wall check (mps_thin_walls) in a 3-D tank at r_e = 3.1 dp,
+ * which needs a wall layer and 3 dummy layers: with them no wall particle
+ * is thin, the 3-D corners included (their diagonal normal meets the next
+ * lattice point at 2 sqrt(3) dp, beyond r_e: damBreakObstacle warned of
+ * its two floor corners); with 2 dummy layers every particle of a flat
+ * face is (along the axes the third dummy layer at 3 dp is inside r_e). */
+static int thin_walls_3d(int layers)
+{
+    struct mps_particles P;
+    struct mps_settings S;
+    struct mps_solver s;
+    struct linsolve *ls;
+    mps_test_tank(&P, 3, (const int[3]){ 5, 5, 5 }, layers, 2, DP);
+    mps_settings_default(&S);
+    S.re_n = S.re_grad = S.re_lap = 3.1;
+    assert_int_equal(linsolve_create_named("pcg", "jacobi", 1e-8, 100, &ls),
+                     0);
+    assert_int_equal(mps_solver_init(&s, &P, &S, DP, ls), 0);
+    int faces = 0;
+    for (int i = 0; i < s.P.n; i++) {
+        const double *n = s.P.normal + 3 * i;
+        faces += s.P.type[i] == MPS_WALL
+                 && fabs(fabs(n[0]) + fabs(n[1]) + fabs(n[2]) - 1) < 1e-12;
+    }
+    int bad = s.n_thin_walls;
+    print_message("%d wall + dummy layers: %d wall particles thin, %d on "
+                  "flat faces\n", layers, bad, faces);
+    if (layers == 3)
+        assert_true(bad >= faces && faces > 0);
+    mps_solver_free(&s);
+    return bad;
+}
+
+static void test_thin_walls(void **st)
+{
+    (void)st;
+    log_set_quiet(1);
+    assert_int_equal(thin_walls_3d(4), 0);
+    thin_walls_3d(3);
+}
+
 /* A fluid particle thrown far out of the tank is removed and counted. */
 static void test_escape(void **st)
 {
@@ -503,6 +544,7 @@ int main(void)
         cmocka_unit_test(test_escape),
         cmocka_unit_test(test_nan),
         cmocka_unit_test(test_checks),
+        cmocka_unit_test(test_thin_walls),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
