@@ -96,14 +96,20 @@ int coupling_settings_read(const struct dict *d, struct coupling_settings *s)
                           "volumeFractionRelaxation %g (relaxation time of "
                           "the water content phi/eps [s]; 0 = off) must be "
                           ">= 0", s->phi_relax);
+    /* Defaults (issue 23): the forms that keep a fluid at rest in a bed of
+     * grains at rest (A0-04 (b) for B; A's eq. 12 is already consistent)
+     * and wall particles of weight 1 in the MPS sums (A0-03; their
+     * porosity still scales their PPE rows). The paper's literal forms
+     * stay selectable: ppeDivergence intrinsic, porousWalls yes. */
     static const char *const divs[] = { "intrinsic", "superficial", NULL };
-    TRY(dict_get_word_or(d, "ppeDivergence", divs, 0, &s->superficial));
+    TRY(dict_get_word_or(d, "ppeDivergence", divs,
+                         s->model == COUPLING_MODEL_B, &s->superficial));
     if (s->superficial && s->model == COUPLING_MODEL_A)
         return dict_error(d, "ppeDivergence", SIM_ERR_DICT,
                           "ppeDivergence superficial applies to model B only "
                           "(model A's hydrostatic state needs the intrinsic "
                           "form: models.c)");
-    TRY(dict_get_bool_or(d, "porousWalls", 1, &s->porous_walls));
+    TRY(dict_get_bool_or(d, "porousWalls", 0, &s->porous_walls));
     TRY(dict_get_scalar_or(d, "porosityMin", 0.3, &s->eps_min));
     if (!(s->eps_min > 0 && s->eps_min < 1))
         return dict_error(d, "porosityMin", SIM_ERR_DICT,

@@ -64,11 +64,13 @@ struct coupling_settings {
     double skin;                    /* `pairSkin` / dp (0): pairs.h update */
     double phi_relax;               /* `volumeFractionRelaxation` [s] (0:
                                        off), mps/volume_exchange.c        */
-    int superficial;                /* `ppeDivergence superficial` (B only):
-                                       (rho/dt) div(eps u*), A0-04 (b)    */
-    int porous_walls;               /* `porousWalls` (yes, A0-03): wall and
-                                       dummy particles weigh 1/eps_j in the
-                                       MPS sums; no: they weigh 1         */
+    int superficial;                /* `ppeDivergence superficial` (B only,
+                                       B's default): (rho/dt) div(eps u*),
+                                       A0-04 (b); intrinsic: the paper's */
+    int porous_walls;               /* `porousWalls` (no, the default): wall
+                                       and dummy particles weigh 1 in the
+                                       MPS sums; yes (the paper's reading,
+                                       A0-03): they weigh 1/eps_j         */
 };
 
 /* Read the entries above; errors cite couplingDict's file and line. */

@@ -3,8 +3,8 @@
  * grains displace is taken out of the particles' volumes, so that a
  * coupled run starts at rest.
  *
- * With the fluid lattice filling the pores (`fill`, the default, which is
- * what Xie et al. 2025 §3.1 appear to do: METHODS.md A0-16) every particle
+ * With the fluid lattice filling the pores (`fill`, what Xie et al. 2025
+ * §3.1 appear to do: METHODS.md A0-16) every particle
  * inside a packed bed has the porosity-weighted number density (eq. 7,
  * sum of w/eps_j) of about n0/eps, twice n0 in a simple-cubic bed: the PPE
  * source (12)/(13) reads that as a compression of 100 % and, at dt = 1e-4
@@ -23,6 +23,10 @@
  * the density term of the PPE turns that into pressure errors of the
  * order of the hydrostatic pressure in the first step.)
  * Wall and dummy particles keep phi = 1 (walls are not porous).
+ *
+ * Default (issue 23): `scale` in a case with system/couplingDict, the
+ * one that starts a coupled run at rest; `fill` in a case without one,
+ * where no porosity is defined and nothing would be scaled.
  */
 #include <math.h>
 #include <stdlib.h>
@@ -88,11 +92,15 @@ int gen_grain_volume(const struct app *a, struct gen_case *c,
         rc = SIM_ERR_NOMEM;
         goto out;
     }
+    char path[4096];
+    int coupled = !access(app_path(a, "system/couplingDict", path,
+                                   sizeof path), R_OK);
     for (int i = 0; i < c->nregions; i++) {
         if (c->r[i].type != REGION_FLUID)
             continue;
         TRY_GOTO(rc, dict_get_word_or(c->r[i].d, "grainVolume",
-                                      grain_volume_names, 0, &scale[i]),
+                                      grain_volume_names, coupled,
+                                      &scale[i]),
                  out);
         if (scale[i] && !asker)
             asker = &c->r[i];
