@@ -68,6 +68,7 @@ int couple_fluid_init(struct couple_fluid *cf, const struct dict *coupling,
 {
     struct mps_particles *P = &s->P;
     memset(cf, 0, sizeof *cf);
+    cf->dict = coupling;
     static const char *const schemes[] = { "sequential", "concurrent", NULL };
     TRY(coupling_settings_read(coupling, &cf->cs));
     TRY(dict_get_word_or(coupling, "scheme", schemes, 0, &cf->concurrent));
@@ -217,6 +218,62 @@ int couple_fluid_update(struct couple_fluid *cf, struct mps_solver *s)
     return SIM_OK;
 }
 
+/* Porosity below which a start is "among grains": a fluid particle that
+ * fills its site at eps = 0.95 reads as 5 % compressed, which the PPE
+ * turns into a pressure of order the hydrostatic one in the first step. */
+#define PACKED_EPS 0.95
+
+/* Before the first step: warn, naming the keys, when the grains meet one of
+ * the combinations that the sedimentation case and a 9 % suspension showed
+ * to be unstable or wrong (doc/theory.md A0-03, A0-04, A0-16): fluid
+ * particles that fill the pores (grainVolume fill), the literal Model B
+ * PPE source (ppeDivergence intrinsic) or walls weighted 1/eps (porousWalls
+ * yes), each where the porosity is below PACKED_EPS. */
+static void check_start(const struct couple_fluid *cf,
+                        const struct mps_solver *s)
+{
+    const struct mps_particles *P = &s->P;
+    int nf = 0, nfill = 0, nw = 0;
+    double ef = 1, ew = 1;
+    for (int i = 0; i < P->n; i++) {
+        if (cf->eps[i] >= PACKED_EPS)
+            continue;
+        if (P->type[i] == MPS_FLUID) {
+            nf++;
+            ef = fmin(ef, cf->eps[i]);
+            nfill += !P->phi || P->phi[i] > cf->eps[i] + 0.02;
+        } else {
+            nw++;
+            ew = fmin(ew, cf->eps[i]);
+        }
+    }
+    char at[512];
+    if (nfill)
+        log_warn("%d fluid particle(s) fill their site where the grains "
+                 "leave a porosity down to %.2f: they start compressed by "
+                 "up to %.0f %% and the pressure equation will throw the "
+                 "water out of the grains. Regenerate the particles with "
+                 "`grainVolume scale;` in the fluid region of "
+                 "system/particleDict (the default when system/couplingDict "
+                 "exists; `fill` is the paper's reading, A0-16)", nfill, ef,
+                 100 * (1 / ef - 1));
+    if (nf && cf->cs.model == COUPLING_MODEL_B && !cf->cs.superficial)
+        log_warn("%s: ppeDivergence intrinsic (the paper's eq. 13 read "
+                 "literally) with %d fluid particle(s) among grains (porosity "
+                 "down to %.2f): it is not hydrostatic where the porosity "
+                 "varies (+21 %% on the floor of the sedimentation case); "
+                 "`superficial` (the default) keeps it hydrostatic",
+                 dict_where(cf->dict, "ppeDivergence", at, sizeof at), nf,
+                 ef);
+    if (nw && cf->cs.porous_walls)
+        log_warn("%s: porousWalls yes with %d wall or dummy particle(s) "
+                 "among grains (porosity down to %.2f): they count up to "
+                 "%.1f times in the number density and the water over a bed "
+                 "rings; `no` (the default) weighs them 1",
+                 dict_where(cf->dict, "porousWalls", at, sizeof at), nw, ew,
+                 1 / ew);
+}
+
 int couple_fluid_grain_fields(struct couple_fluid *cf, struct mps_solver *s)
 {
     struct mps_particles *P = &s->P;
@@ -318,6 +375,8 @@ int couple_fluid_exchange(struct couple_fluid *cf, struct mps_solver *s,
             for (int k = 0; k < cf->ng; k++)
                 cf->eps_k[k] = 1.0;
         TRY(couple_fluid_update(cf, s));
+        if (cf->exchanges == 0)
+            check_start(cf, s);
         TRY(couple_fluid_grain_fields(cf, s));
         TRY(send_fluid(cf, step, t));
         cf->exchanges++;
@@ -329,6 +388,7 @@ int couple_fluid_exchange(struct couple_fluid *cf, struct mps_solver *s,
         for (int k = 0; k < cf->ng; k++)
             cf->eps_k[k] = 1.0;
         TRY(couple_fluid_update(cf, s));
+        check_start(cf, s);
     }
     TRY(couple_fluid_grain_fields(cf, s));
     TRY(send_fluid(cf, step, t));

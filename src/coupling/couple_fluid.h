@@ -53,6 +53,7 @@ struct proto_dem_state;
 
 struct couple_fluid {
     struct coupling_settings cs;
+    const struct dict *dict;    /* system/couplingDict (the caller's)    */
     struct channel *ch;         /* NULL until couple_fluid_open          */
     int dim;
     double dp, re, Vp;          /* spacing, r_e,s [m], MPS volume dp^3   */
