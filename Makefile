@@ -5,7 +5,7 @@
 #   make SAN=1           AddressSanitizer + UBSan build in build-san/ (bin-san/)
 #   make clean
 #
-# Layout (DESIGN.md §2):
+# Layout (doc/design.md §2):
 #   src/<lib>/**.c                -> $(BUILD)/lib/lib<lib>.a
 #   src/<lib>/Make/options        DEPS = libraries <lib> links against, in link order
 #   applications/*/<app>/**.c     -> bin/<app>

@@ -2,7 +2,7 @@
  * dict.h — OpenFOAM-syntax dictionaries: parse, query with typed getters,
  * report what was used, expand, and edit in place.
  *
- * Grammar (DESIGN.md §3, OpenFOAM's):
+ * Grammar (doc/design.md §3, OpenFOAM's):
  *   file    := [FoamFile { ... }] entry*
  *   entry   := key value+ ';' | key '{' entry* '}' | '#include' "file" | '$var' ';'
  *   value   := word | number | "string" | '(' value* ')' | '{' entry* '}'

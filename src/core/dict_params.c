@@ -2,7 +2,7 @@
  * dict_params.c — what the case files meant to the program: warnings for
  * entries nothing read (with "did you mean"), and the usedParameters report
  * of every effective value, defaults included (SWIFT's used_parameters.yml,
- * PETSc's -options_left; STYLE.md C7).
+ * PETSc's -options_left; doc/design.md C7).
  *
  * The records are process-wide: a program reads several files and writes
  * one report. Getters are not thread-safe (dict.h), and neither is this.

@@ -1,5 +1,5 @@
 /*
- * select.h — run-time selection of a model by name (STYLE.md C3).
+ * select.h — run-time selection of a model by name (doc/design.md C3).
  *
  * A model category is a NULL-terminated `const` array of pointers to ops
  * structs, each of which begins with the two members of struct model_head:

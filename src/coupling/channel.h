@@ -1,6 +1,6 @@
 /*
  * channel.h — the shared-memory channel between mpsFluid and demSolid
- * (DESIGN.md §4). It moves frames of arrays; it knows nothing of physics.
+ * (doc/design.md §4). It moves frames of arrays; it knows nothing of physics.
  * The messages of the coupling are defined on top of it in protocol.h.
  *
  * One POSIX shared-memory segment (/dev/shm/<name>, mode 0600) holds a

@@ -5,7 +5,7 @@
  *
  * Why a pidfd: kill(pid, 0) still succeeds for a killed process that its
  * parent has not reaped yet (a zombie), and pids are reused; a pidfd becomes
- * readable the moment the process exits, zombie or not (toolchain.md §4).
+ * readable the moment the process exits, zombie or not (doc/libraries.md §4).
  * Why spin first, and yield while spinning: a sequential coupling step
  * hands the turn back within microseconds for small frames; a pure spin
  * would starve a peer that waits for this same core (measured: 77 us per

@@ -1,6 +1,6 @@
 /*
  * couple_dem.c — the DEM side of the sequential MPS-DEM step (Xie et al.
- * 2025 eqs. 25-28, 34, 35; METHODS.md A.7, A.8 (MSS), A.10 step 4).
+ * 2025 eqs. 25-28, 34, 35; doc/theory.md A.7, A.8 (MSS), A.10 step 4).
  *
  *   A: F^int_k = F^d_k - V_k gradP_k                                   (34)
  *   B: F^int_k = F^d_k / eps_k - V_k rho_f g                           (35)

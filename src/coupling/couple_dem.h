@@ -1,7 +1,7 @@
 /*
  * couple_dem.h — the DEM side of a coupled MPS-DEM run: what demSolid does
- * around each advance to the next coupling time (METHODS.md A.8, A.10 step
- * 4; DESIGN.md §4).
+ * around each advance to the next coupling time (doc/theory.md A.8, A.10 step
+ * 4; doc/design.md §4).
  *
  * One coupling interval t^m -> t^{m+1}:
  *   couple_dem_recv()   the fluid state at t^m (u_k, eps_k, Model A gradP_k)

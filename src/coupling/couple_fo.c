@@ -1,6 +1,6 @@
 /*
  * couple_fo.c — function object couplingForces of a coupled demSolid run
- * (METHODS.md A.12.1 outputs, Fig. 5): per written row the total drag
+ * (doc/theory.md A.12.1 outputs, Fig. 5): per written row the total drag
  * sum_k F_bar^d_k of eq. (25) averaged over the last coupling interval, the
  * total pressure-gradient force (Model A: sum -V_k gradP_k, eq. 34; Model
  * B: the buoyancy sum -V_k rho_f g, eq. 35), the largest grain-fluid slip
@@ -68,7 +68,7 @@ static void destroy(void *data)
 
 static const struct fo_ops couple_fo_forces = {
     .name = "couplingForces",
-    .reference = "Xie et al. 2025 Fig. 5 (METHODS.md A.12.1)",
+    .reference = "Xie et al. 2025 Fig. 5 (doc/theory.md A.12.1)",
     .file = "couplingForces",
     .create = create,
     .header = header,

@@ -1,6 +1,6 @@
 /*
  * couple_output.c — per-point coupling fields of a coupled run's output
- * (Xie et al. 2025 eqs. 25, 32-36; METHODS.md A.7-A.8): the grains' slip
+ * (Xie et al. 2025 eqs. 25, 32-36; doc/theory.md A.7-A.8): the grains' slip
  * u_k - v_k and the fluid's reaction -V_i f_A,i of eq. (36) carried through
  * the particle renumbering of mps_step() (couple_output.h).
  */

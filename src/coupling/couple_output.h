@@ -1,6 +1,6 @@
 /*
  * couple_output.h — per-point coupling fields in the output of a coupled
- * run (issue 6; Xie et al. 2025 eqs. 25, 32-36; METHODS.md A.7-A.8).
+ * run (issue 6; Xie et al. 2025 eqs. 25, 32-36; doc/theory.md A.7-A.8).
  *
  * demSolid, <time>/dem.vtu, per grain k (couple_dem.h; the state of the
  * coupling interval that ends at the written time):

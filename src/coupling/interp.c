@@ -1,6 +1,6 @@
 /*
  * interp.c — Shepard interpolation of MPS fields to grain centres
- * (Xie et al. 2025 eqs. 32-33; METHODS.md A.7 and A0-14).
+ * (Xie et al. 2025 eqs. 32-33; doc/theory.md A.7 and A0-14).
  *
  *   phi_k = sum_i phi_i w_s(|r_ki|) / sum_i w_s(|r_ki|)          (32), (33)
  *

@@ -1,6 +1,6 @@
 /*
  * interp.h — fluid fields at the grain centres (Xie et al. 2025 eqs. 32-33
- * and, for Model A, the pressure gradient of METHODS.md A0-14).
+ * and, for Model A, the pressure gradient of doc/theory.md A0-14).
  *
  *   eps_k = sum_i eps_i w_s(|r_ki|) / sum_i w_s(|r_ki|)               (32)
  *   u_k   = sum_i u_i   w_s(|r_ki|) / sum_i w_s(|r_ki|)               (33)
@@ -23,7 +23,7 @@ struct coupling_pairs;
 /*
  * Shepard average to every grain of an ncomp-component field f given at the
  * MPS particles (f[ncomp*i + c]). mask (may be NULL = all) selects the
- * particles that contribute (METHODS.md A0-13 default: fluid and wall, not
+ * particles that contribute (doc/theory.md A0-13 default: fluid and wall, not
  * dummy). Grains with no contributor get def[c] (def may be NULL = 0).
  * wsum (may be NULL) receives sum_i w_s per grain.
  */

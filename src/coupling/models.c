@@ -1,5 +1,5 @@
 /*
- * models.c — Model A and Model B source terms (Xie et al. 2025; METHODS.md
+ * models.c — Model A and Model B source terms (Xie et al. 2025; doc/theory.md
  * A.2 eqs. 1-5, A.4 eqs. 12-13, A.7 eqs. 34-36, A.10 steps 7, 9, 10).
  *
  * Model A (pressure drop shared by both phases):

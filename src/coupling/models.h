@@ -1,6 +1,6 @@
 /*
  * models.h — Model A and Model B of the unresolved coupling (Xie et al.
- * 2025 eqs. 1-5, 12-13, 34-36; METHODS.md A.2, A.4, A.7, A.10), as small
+ * 2025 eqs. 1-5, 12-13, 34-36; doc/theory.md A.2, A.4, A.7, A.10), as small
  * array functions that the two solvers call, plus the coupling settings of
  * system/couplingDict and the run-time validity guards.
  *
@@ -23,7 +23,7 @@
  *       A: c_i = 1              B: c_i = 1/eps_i
  * "visc" is the viscous term of the MPS solver, nu lap(u_d)/eps_i.
  *
- * Call sequence of one fluid step m -> m+1 (METHODS.md A.10, sequential):
+ * Call sequence of one fluid step m -> m+1 (doc/theory.md A.10, sequential):
  *   mpsFluid  coupling_pairs_update(P, dim, radius*dp, skin*dp, ng, x_k,
  *                                   np, x_i, &searched)
  *             coupling_porosity(P, V_k, eps_min, eps, inv_eps, &nclamp)
@@ -109,7 +109,7 @@ void coupling_correction_factor(enum coupling_model m, int np,
                                 const double *eps, double *c);
 
 /* Run-time guards (warnings, counts returned):
- * grains too large for the kernel (d > r_e,s / 3, METHODS.md A0-13). */
+ * grains too large for the kernel (d > r_e,s / 3, doc/theory.md A0-13). */
 int coupling_guard_grain_size(int ng, const double *d, double re_s);
 /* MPS particles whose porosity (31) fell below porosityMin and was
  * clamped (n_clamped from coupling_porosity) out of np: a warning naming

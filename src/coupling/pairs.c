@@ -1,6 +1,6 @@
 /*
  * pairs.c — grain / MPS-particle pairs by cells of size r_e,s/2
- * (METHODS.md A.10 step 1); see pairs.h for the layout and guarantees.
+ * (doc/theory.md A.10 step 1); see pairs.h for the layout and guarantees.
  *
  * A build is: bin the particles of the grain box (counting sort, with a
  * cell-ordered copy of their positions); one pass per grain over its

@@ -1,6 +1,6 @@
 /*
  * pairs.h — grain / MPS-particle pairs within the coupling radius r_e,s
- * (METHODS.md A.10 step 1, "MPS-DEM (cells of r_e,s)").
+ * (doc/theory.md A.10 step 1, "MPS-DEM (cells of r_e,s)").
  *
  * The MPS neighbour list holds particle-particle pairs only, so the
  * coupling keeps its own list, built by binning the MPS particles into

@@ -1,6 +1,6 @@
 /*
  * porosity.c — porosity of MPS particles from the DEM grains
- * (Xie et al. 2025 eqs. 29-31, after Sun et al. 2014; METHODS.md A.7).
+ * (Xie et al. 2025 eqs. 29-31, after Sun et al. 2014; doc/theory.md A.7).
  *
  *   eps_i = 1 - (1/n_s) sum_k w_s(|r_ik|) V_k                        (31)
  *
@@ -18,7 +18,7 @@
  * packing right (check E1-10: 1 - pi/6 inside a simple-cubic packing).
  *
  * The raw value can fall below zero where kernels of a dense packing
- * overlap at a small r_e,s, so eps is clamped to [eps_min, 1] (METHODS.md
+ * overlap at a small r_e,s, so eps is clamped to [eps_min, 1] (doc/theory.md
  * A.3, eps_min = 0.3 by default); the number clamped is returned for the
  * run-time guard.
  */

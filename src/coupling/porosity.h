@@ -1,6 +1,6 @@
 /*
  * porosity.h — the coupling kernel w_s and the porosity of MPS particles
- * from the DEM grains (Xie et al. 2025 eqs. 29-31; METHODS.md A.7).
+ * from the DEM grains (Xie et al. 2025 eqs. 29-31; doc/theory.md A.7).
  *
  *   w_s(r) = 4 (r/r_e)^5 - 5 (r/r_e)^4 + 1    r < r_e,  0 otherwise (29)
  *   n_s    = int w_s dV = (10 pi/21) r_e^3 (3-D)  or  (10 pi/21) r_e^2 (2-D)
@@ -41,7 +41,7 @@ double coupling_ns(int dim, double re);
 /*
  * Porosity at every MPS particle of the last pair build (eq. 31).
  *   Vg       grain volumes [m^3] (areas [m^2] in 2-D), one per grain
- *   eps_min  lower clamp (METHODS.md A.3, default 0.3), in (0, 1)
+ *   eps_min  lower clamp (doc/theory.md A.3, default 0.3), in (0, 1)
  *   eps      out: np values in [eps_min, 1]
  *   inv_eps  out (may be NULL): np values 1/eps, what MPS operators take
  *   n_clamped out (may be NULL): particles whose raw value was < eps_min,

@@ -1,6 +1,6 @@
 /*
  * protocol.h — the messages mpsFluid and demSolid exchange through a
- * channel (DESIGN.md §4). The physics that fills them lives elsewhere in
+ * channel (doc/design.md §4). The physics that fills them lives elsewhere in
  * src/coupling; this file fixes their layout only.
  *
  * Each message is one frame whose payload is structure-of-arrays: a list

@@ -1,6 +1,6 @@
 /*
  * reaction.c — time-averaged drag and its reaction on the fluid
- * (Xie et al. 2025 eq. 36; METHODS.md A.7, A.8 "MSS", A.10 steps 4 and 6).
+ * (Xie et al. 2025 eq. 36; doc/theory.md A.7, A.8 "MSS", A.10 steps 4 and 6).
  *
  *   F_bar^d_k = (1/N_sub) sum_{s=1}^{N_sub} F^d_k(s)
  *   f_A,i     = (1/V_i) sum_k F_bar^d_k w_s(|r_ki|) / sum_j w_s(|r_kj|)  (36)

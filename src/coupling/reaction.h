@@ -1,6 +1,6 @@
 /*
  * reaction.h — the drag averaged over the DEM sub-steps and its reaction on
- * the MPS particles (Xie et al. 2025 eq. 36; METHODS.md A.7, A.8, A.10
+ * the MPS particles (Xie et al. 2025 eq. 36; doc/theory.md A.7, A.8, A.10
  * steps 4 and 6).
  *
  *   F_bar^d_k = (1/N_sub) sum_s F^d_k(s)

@@ -1,5 +1,5 @@
 /*
- * dem.h — the DEM library: spheres with translation and rotation (METHODS.md
+ * dem.h — the DEM library: spheres with translation and rotation (doc/theory.md
  * A.6, eqs. 17-18), contact laws assembled from sub-models (contact.h),
  * analytic walls (wall.h), a Verlet-skin neighbour list (nlist.h), and time
  * integrators selected by name (integrator.h).
@@ -13,7 +13,7 @@
  * a coupling time the caller may set, per grain, an external force and the
  * fluid velocity and porosity at the grain centre; the drag law (a function
  * pointer, evaluated with the grain's *current* velocity at every force
- * evaluation, METHODS.md A.8 [P]) turns them into a force; after the advance
+ * evaluation, doc/theory.md A.8 [P]) turns them into a force; after the advance
  * dem_mean_drag() returns the drag averaged over the interval, for the
  * reaction force of eq. (36).
  */

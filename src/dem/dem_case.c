@@ -1,6 +1,6 @@
 /*
  * dem_case.c — the DEM dictionaries (dem_case.h). Selection of contact
- * sub-models and integrators by name goes through model_select (STYLE.md
+ * sub-models and integrators by name goes through model_select (doc/design.md
  * C3), so an unknown name lists the valid ones at its file and line.
  */
 #include "dem/dem_case.h"

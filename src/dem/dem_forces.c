@@ -1,7 +1,7 @@
 /*
  * dem_forces.c — one force evaluation: contact forces and moments of all
  * grain pairs and grain-wall contacts, gravity, external and drag forces,
- * turned into accelerations (METHODS.md A.6, eqs. 17-18):
+ * turned into accelerations (doc/theory.md A.6, eqs. 17-18):
  *
  *   m_k dv_k/dt = sum_l F^C_kl + m_k g + F^ext_k + F^d_k(v_k)
  *   I_k dw_k/dt = sum_l (R_k n_kl x F^t_kl + M^r_kl),   I_k = (2/5) m_k R_k^2

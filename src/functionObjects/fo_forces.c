@@ -1,6 +1,7 @@
 /*
  * fo_forces.c — hydrodynamic (pressure) force on named wall patches
- * (METHODS.md A.9 [P]; force on the obstacle, Figs. 18 and 24 of S000):
+ * (doc/theory.md A.9 [P]; force on the obstacle, Figs. 18 and 24 of Xie
+ * et al. 2025):
  *
  *     F_k = sum over wall particles i of patch k of  p_i dp^(d-1) n_i
  *
@@ -170,7 +171,7 @@ static int execute(void *data, const struct fo_scene *s, FILE *out)
 
 const struct fo_ops fo_mps_forces = {
     .name = "forces",
-    .reference = "METHODS.md A.9",
+    .reference = "doc/theory.md A.9",
     .file = "forces",
     .create = create,
     .header = header,

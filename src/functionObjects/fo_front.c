@@ -1,6 +1,6 @@
 /*
- * fo_front.c — leading edge of the fluid (METHODS.md A.12.2 [P], fronts of
- * Figs. 11, 13 and 21 of S000):
+ * fo_front.c — leading edge of the fluid (doc/theory.md A.12.2 [P], fronts
+ * of Figs. 11, 13 and 21 of Xie et al. 2025):
  *
  *     X(t) = max { (x_i - o) . e : i fluid, n_i/n0 >= minNumberDensity,
  *                                  z_i - z_o <= maxHeight }
@@ -198,7 +198,7 @@ static int execute(void *data, const struct fo_scene *s, FILE *out)
 
 const struct fo_ops fo_mps_front = {
     .name = "front",
-    .reference = "METHODS.md A.12.2; Martin and Moyce 1952",
+    .reference = "doc/theory.md A.12.2; Martin and Moyce 1952",
     .file = "front",
     .create = create,
     .header = header,

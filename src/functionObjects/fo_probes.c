@@ -1,5 +1,5 @@
 /*
- * fo_probes.c — pressure at fixed points (METHODS.md A.9 [P], probe P1 of
+ * fo_probes.c — pressure at fixed points (doc/theory.md A.9 [P], probe P1 of
  * A.12.3 / A0-18).
  *
  * interpolation shepard (default): Shepard average of the pressure of the
@@ -8,7 +8,7 @@
  *     p(x) = sum_j w(|x_j - x|) p_j / sum_j w(|x_j - x|),
  *     w(r) = R/(0.85 r + 0.15 R) - 1   (r < R),   0 otherwise,
  *
- * with the Zhang kernel of METHODS.md A.3 eq. (6) (Zhang, Wan and Hino
+ * with the Zhang kernel of doc/theory.md A.3 eq. (6) (Zhang, Wan and Hino
  * 2014), the kernel the solver itself uses: finite at r = 0, so a probe on
  * a particle is not a singular case, and zero at r = R, so the value does
  * not jump when a particle crosses the edge of the reach. Wall particles
@@ -213,7 +213,7 @@ static int execute(void *data, const struct fo_scene *s, FILE *out)
 
 const struct fo_ops fo_mps_probes = {
     .name = "probes",
-    .reference = "METHODS.md A.9 (Zhang, Wan and Hino 2014 kernel)",
+    .reference = "doc/theory.md A.9 (Zhang, Wan and Hino 2014 kernel)",
     .file = "probes",
     .create = create,
     .header = header,

@@ -1,5 +1,5 @@
 /*
- * fo_volume.c — fluid volume as a conservation check (METHODS.md E1-17):
+ * fo_volume.c — fluid volume as a conservation check (doc/theory.md E1-17):
  *
  *     N_f = number of fluid particles,   V = N_f dp^d
  *     (V = sum of volumeFraction dp^d when the cloud has that field,
@@ -79,7 +79,7 @@ static void destroy(void *data) { free(data); }
 
 const struct fo_ops fo_mps_volume = {
     .name = "volume",
-    .reference = "METHODS.md E1-17",
+    .reference = "doc/theory.md E1-17",
     .file = "volume",
     .create = create,
     .header = header,

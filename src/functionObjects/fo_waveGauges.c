@@ -1,6 +1,6 @@
 /*
  * fo_waveGauges.c — free-surface elevation at fixed horizontal positions
- * (METHODS.md A.12.3 [P], wave gauge H1 of A0-18; also the column height
+ * (doc/theory.md A.12.3 [P], wave gauge H1 of A0-18; also the column height
  * H(tau) of Martin and Moyce 1952 with a gauge at the wall).
  *
  * For a gauge at horizontal position (x_g, y_g) (2-D: x_g only), the
@@ -188,7 +188,7 @@ static int execute(void *data, const struct fo_scene *s, FILE *out)
 
 const struct fo_ops fo_mps_wave_gauges = {
     .name = "waveGauges",
-    .reference = "METHODS.md A.12.3",
+    .reference = "doc/theory.md A.12.3",
     .file = "waveGauges",
     .create = create,
     .header = header,

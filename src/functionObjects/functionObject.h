@@ -1,6 +1,6 @@
 /*
  * functionObject.h — scheduled diagnostics (OpenFOAM function objects,
- * Gerris events; STYLE.md C14). A solver never knows which diagnostics
+ * Gerris events; doc/design.md C14). A solver never knows which diagnostics
  * exist: it describes its state as a `struct fo_scene` and calls
  * fo_list_execute() once per step.
  *

@@ -1,12 +1,13 @@
 /*
- * mps_functionObjects.h — function objects of the MPS fluid (STYLE.md C14),
- * passed by mpsFluid to fo_list_create() beside fo_generic_table:
+ * mps_functionObjects.h — function objects of the MPS fluid
+ * (doc/design.md C14), passed by mpsFluid to fo_list_create() beside
+ * fo_generic_table:
  *
  *     const struct fo_ops *const *const tables[] =
  *         { fo_generic_table, mps_fo_table, NULL };
  *
  *   probes      pressure at points (Shepard average or nearest wall
- *               particle, METHODS.md A.9)                 fo_probes.c
+ *               particle, doc/theory.md A.9)                 fo_probes.c
  *   waveGauges  free-surface elevation in vertical columns (A.12.3)
  *                                                         fo_waveGauges.c
  *   front       leading edge of the fluid along a direction (A.12.2),

@@ -1,7 +1,7 @@
 /*
  * base64.h — RFC 4648 base64 without line breaks, as VTK's XML readers want
- * it (toolchain.md §3: libxml2's own encoder wraps lines, which ParaView 5.11
- * cannot read).
+ * it (doc/libraries.md §3: libxml2's own encoder wraps lines, which
+ * ParaView 5.11 cannot read).
  */
 #ifndef MPSDEM_IO_BASE64_H
 #define MPSDEM_IO_BASE64_H

@@ -1,6 +1,6 @@
 /*
  * pvd.c — ParaView collections (.pvd): one DataSet per written time, sorted
- * by time, file paths relative to the .pvd (vtu.h; toolchain.md §3).
+ * by time, file paths relative to the .pvd (vtu.h; doc/libraries.md §3).
  *
  * The collection is read with libxml2, edited in memory and rewritten
  * atomically, so a crash leaves either the old or the new collection. A

@@ -8,7 +8,7 @@
  * UInt8 with 1..9 components. format="ascii" writes %.17g (exact round trip);
  * format="binary" writes our own base64 of (UInt64 byte count)(data), each
  * part padded separately, without line breaks — libxml2's base64 writer
- * breaks lines and ParaView 5.11 then fails (toolchain.md §3).
+ * breaks lines and ParaView 5.11 then fails (doc/libraries.md §3).
  *
  * Writers go through a temporary file in the same directory and rename(2),
  * so a crash never leaves a truncated file under the final name.

@@ -1,6 +1,6 @@
 /*
  * vtu_write.c — write a particle cloud as a VTK XML UnstructuredGrid
- * (vtu.h; layout in toolchain.md §3).
+ * (vtu.h; layout in doc/libraries.md §3).
  *
  * The skeleton goes through libxml2's xmlTextWriter; array payloads are
  * produced here, in chunks, and handed over with xmlTextWriterWriteRaw:

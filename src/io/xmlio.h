@@ -1,7 +1,7 @@
 /*
  * xmlio.h — the thin libxml2 adapter shared by the VTU and PVD code: atomic
  * output through a temporary file, and parsing with libxml2's messages
- * turned into our SIM_ERR_IO (STYLE.md C6: every libxml2 call is wrapped
+ * turned into our SIM_ERR_IO (doc/design.md C6: every libxml2 call is wrapped
  * once). Internal to src/io.
  */
 #ifndef MPSDEM_IO_XMLIO_H

@@ -29,7 +29,7 @@ int csr_alloc(struct csr_matrix *A, int n, int64_t nnz);
 void csr_free(struct csr_matrix *A);
 
 /*
- * The toolchain.md §2 benchmark matrix: particles on a square/cubic lattice
+ * The doc/libraries.md §2 benchmark matrix: particles on a square/cubic lattice
  * of spacing 1 with nside points per direction, each coordinate jittered by
  * U(-jitter, jitter) and then moved by U(-move, move); neighbours j with
  * r_ij < re; MPS weight w = re/r - 1; row i: a_ii = sum_j w_ij over all
@@ -37,7 +37,7 @@ void csr_free(struct csr_matrix *A);
  * the free surface: identity row, b = 0, couplings to it dropped on both
  * sides, so A is an SPD, irreducibly diagonally dominant M-matrix.
  * With porous != 0 every particle gets a porosity eps_j in [0.4, 1) and the
- * weights become w_ij/eps_j (METHODS.md §A.4, Model B): a non-symmetric
+ * weights become w_ij/eps_j (doc/theory.md §A.4, Model B): a non-symmetric
  * matrix, still diagonally dominant.
  * b_i = 1 + 0.1 U(-1, 1) (0 on the surface), from rhs_seed.
  */

@@ -1,14 +1,15 @@
 /*
  * csr_lattice.c — the MPS-like pressure Laplacian on a jittered lattice
- * (toolchain.md §2 "Benchmark set-up"), for the linsolve tests and ppeBench.
+ * (doc/libraries.md §2 "Benchmark set-up"), for the linsolve tests and
+ * ppeBench.
  *
  *   a_ij = -w(r_ij),  a_ii = sum_j w(r_ij),  w(r) = re/r - 1  (r < re)
  *
  * is the matrix of -<lap P>_i up to the constant 2d/(lambda n0) of
- * Koshizuka & Oka (1996), Eq. (10) in METHODS.md. Free-surface (top layer)
+ * Koshizuka & Oka (1996), Eq. (10) in doc/theory.md. Free-surface (top layer)
  * rows are identity rows with P = 0; their couplings are dropped from the
  * other rows but their weights stay in a_ii, which makes the matrix SPD.
- * With porosity (Model B, METHODS.md §A.4 note [P]) the weights are
+ * With porosity (Model B, doc/theory.md §A.4 note [P]) the weights are
  * w_ij/eps_j and the matrix is no longer symmetric.
  */
 #include "linsolve/csr.h"

@@ -2,7 +2,7 @@
  * linsolve.c — the facade of linsolve.h: selection of a solver and a
  * preconditioner by name, validation of every system, work storage reused
  * across solves, timing, and the final true-residual check that every
- * answer has to pass (STYLE.md C12: no silent wrong answer).
+ * answer has to pass (doc/design.md C12: no silent wrong answer).
  */
 #include "core/app.h"
 #include "linsolve/linsolve.h"

@@ -27,7 +27,7 @@
  *
  * The same solvers as a SUNDIALS SUNLinearSolver: sunlinsol_ppe.h.
  * Helpers (SpMV, checks, the benchmark matrix): csr.h.
- * See toolchain.md §2 for the benchmark that chose these defaults.
+ * See doc/libraries.md §2 for the benchmark that chose these defaults.
  */
 #ifndef MPSDEM_LINSOLVE_LINSOLVE_H
 #define MPSDEM_LINSOLVE_LINSOLVE_H

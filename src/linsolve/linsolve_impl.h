@@ -2,11 +2,11 @@
  * linsolve_impl.h — internals shared by the solver and preconditioner files
  * of src/linsolve (not for use outside this library and its tests).
  *
- * A solver and a preconditioner are each a model (STYLE.md C3): a const ops
- * table selected by name from a NULL-terminated registry. The facade
- * (linsolve.c) validates the matrix and the right-hand side, owns the work
- * storage, times set-up and solve, and checks the true residual of every
- * answer, so a solver only has to produce x.
+ * A solver and a preconditioner are each a model (doc/design.md C3): a
+ * const ops table selected by name from a NULL-terminated registry. The
+ * facade (linsolve.c) validates the matrix and the right-hand side, owns
+ * the work storage, times set-up and solve, and checks the true residual
+ * of every answer, so a solver only has to produce x.
  */
 #ifndef MPSDEM_LINSOLVE_IMPL_H
 #define MPSDEM_LINSOLVE_IMPL_H

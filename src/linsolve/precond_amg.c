@@ -32,7 +32,7 @@
  *
  * Why it pays on the PPE: Jacobi needs iterations in proportion to the
  * number of particles across the water (~1/dp); the coarse levels remove
- * the smooth error in a few cycles whatever dp is (METHODS.md E1-24:
+ * the smooth error in a few cycles whatever dp is (doc/theory.md E1-24:
  * time per step in proportion to the particle count).
  *
  * Aggregates are formed greedily in row order — the PPE's rows come

@@ -13,7 +13,7 @@
  *
  * Set-up is row by row with a scatter map of row i (cost ~ nnz_row^2 per
  * row) and the triangular solves are sequential: on 2 cores this pays off in
- * 2-D (3-4x fewer iterations) and little in 3-D (toolchain.md §2).
+ * 2-D (3-4x fewer iterations) and little in 3-D (doc/libraries.md §2).
  */
 #include <math.h>
 

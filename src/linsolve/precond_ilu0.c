@@ -7,7 +7,7 @@
  *                                        with (i, j) in the pattern
  *
  * For the non-symmetric PPE of the coupled case (porosity weights 1/eps_j,
- * METHODS.md §A.4 note [P]) with BiCGSTAB. A zero (tiny) pivot makes us
+ * doc/theory.md §A.4 note [P]) with BiCGSTAB. A zero (tiny) pivot makes us
  * factorise A + alpha diag(A) instead, as in precond_ic0.c.
  */
 #include <math.h>

@@ -1,6 +1,6 @@
 /*
  * precond_jacobi.c — Jacobi (diagonal) preconditioning, M = diag(A).
- * The default for the PPE (toolchain.md §2): in 3-D it is the fastest or
+ * The default for the PPE (doc/libraries.md §2): in 3-D it is the fastest or
  * within 1.25x of the fastest, needs no set-up and threads with the SpMV.
  * PCG fuses z = M^-1 r into its vector updates (ops->diagonal).
  */

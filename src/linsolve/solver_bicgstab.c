@@ -1,7 +1,7 @@
 /*
  * solver_bicgstab.c — BiCGSTAB with right preconditioning, for the
  * non-symmetric PPE of the coupled case (porosity weights 1/eps_j,
- * METHODS.md §A.4 note [P]). van der Vorst (1992), SIAM J. Sci. Stat.
+ * doc/theory.md §A.4 note [P]). van der Vorst (1992), SIAM J. Sci. Stat.
  * Comput. 13:631–644, Alg. "preconditioned Bi-CGSTAB"; Saad (2003) Alg. 7.7:
  *
  *   r = b - A x, rh = r, rho = alpha = omega = 1, v = p = 0

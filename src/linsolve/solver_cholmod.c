@@ -3,7 +3,7 @@
  * factorisation (Chen, Davis, Hager & Rajamanickam 2008, ACM TOMS 35(3):22)
  * with a fresh AMD ordering per solve: the pattern of a particle method
  * changes every step, and reusing an old ordering doubled the fill
- * (toolchain.md §2). 15-60x slower than PCG in 3-D: meant as the oracle of
+ * (doc/libraries.md §2). 15-60x slower than PCG in 3-D: meant as the oracle of
  * the tests and for small 2-D cases, not for the time loop.
  *
  * Refuses a non-symmetric matrix (CHOLMOD would silently use one triangle).

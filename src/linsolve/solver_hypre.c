@@ -1,7 +1,7 @@
 /*
  * solver_hypre.c — hypre's PCG preconditioned by one BoomerAMG V-cycle
  * (Henson & Yang 2002, Appl. Numer. Math. 41:155–177), the optional
- * back-end of toolchain.md §2 point 3: iteration counts that do not grow
+ * back-end of doc/libraries.md §2 point 3: iteration counts that do not grow
  * with size (8-18), the winner in 2-D and for 3-D re ~ 2 at 10^6 particles.
  *
  * Only built with `make HYPRE=1` (mpicc, -DMPSDEM_HAVE_HYPRE, -lHYPRE):

@@ -1,6 +1,6 @@
 /*
  * solver_pcg.c — preconditioned conjugate gradients for the symmetric
- * positive definite PPE (single phase, METHODS.md §A.4 with Dirichlet
+ * positive definite PPE (single phase, doc/theory.md §A.4 with Dirichlet
  * free-surface rows). Hestenes & Stiefel (1952); Saad (2003), Alg. 9.1:
  *
  *   r = b - A x, z = M^-1 r, p = z

@@ -1,12 +1,12 @@
 /*
  * sunlinsol_ppe.h — our PPE solvers as a SUNDIALS SUNLinearSolver
- * (STYLE.md C13): a SUNLINEARSOLVER_CUSTOM object of type MATRIX_EMBEDDED
+ * (doc/design.md C13): a SUNLINEARSOLVER_CUSTOM object of type MATRIX_EMBEDDED
  * (the CSR matrix is attached with SUNLinSol_PPESetMatrix, the SUNMatrix
  * argument of Setup/Solve must be NULL) whose content is a struct linsolve.
  *
  * The hot loop stays in linsolve.c's own code rather than in SUNDIALS'
  * PCG: SUNDIALS' serial N_Vector operations are unthreaded and unfused and
- * its PCG was 1.1-2.3x slower than our CG (toolchain.md §1-2), so the
+ * its PCG was 1.1-2.3x slower than our CG (doc/libraries.md §1-2), so the
  * adapter only translates calls: Solve(S, NULL, x, b, tol) solves A x = b
  * to ||b - A x||_2 <= tol when tol > 0 (SUNDIALS' absolute convention) or to
  * the configured relative tolerance when tol <= 0; x is the initial guess

@@ -1,6 +1,6 @@
 /*
  * freesurface.c — free-surface detection (Xie et al. 2025 eqs. 14-16;
- * METHODS.md A.5 with the adopted A0-06/A0-07):
+ * doc/theory.md A.5 with the adopted A0-06/A0-07):
  *
  *   (14) <n>_i < beta n0                      beta  = 0.8
  *   (15) <F>_i = (d/n0) sum_j r_ij/|r_ij| w_ij / eps_j
@@ -8,7 +8,8 @@
  *
  * A fluid particle is on the surface if (14) holds, or if (16) holds and
  * <n>_i < fs_n_max n0 (0.97). |F0| is |F| of a particle on a flat surface of
- * the initial lattice (A0-06: the seed's "internal particle" would be 0).
+ * the initial lattice (A0-06: the "internal particle" of Xie et al. 2025
+ * would give 0).
  * Inside a porous region (eps_i < 1, coupled runs) only (14) applies, with
  * its own threshold betaPorous (default 0.8, the paper's beta): there the
  * neighbour weights 1/eps_j (or phi_j/eps_j) change as the grains move,

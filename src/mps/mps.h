@@ -1,5 +1,5 @@
 /*
- * mps.h — the incompressible MPS fluid solver (Xie et al. 2025, METHODS.md
+ * mps.h — the incompressible MPS fluid solver (Xie et al. 2025, doc/theory.md
  * A.2-A.5, A.9, A.10 with eps = 1): particle storage, settings, and one
  * time step as a fixed sequence of phases.
  *
@@ -14,7 +14,7 @@
  * Particles (structure of arrays; vectors interleaved x y z, z = 0 in 2-D):
  * type 0 fluid, 1 wall (in the PPE, never moves), 2 dummy (number density
  * and neighbour sums only; pressure copied from the nearest wall particle,
- * METHODS.md A.9). Particles are renumbered in cell order every
+ * doc/theory.md A.9). Particles are renumbered in cell order every
  * `renumberInterval` steps; `id` follows each particle.
  *
  * Coupling hooks: `inv_eps` (1/eps per particle), `f_ext` (force per unit

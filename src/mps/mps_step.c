@@ -1,5 +1,5 @@
 /*
- * mps_step.c — one MPS time step m -> m+1 (Xie et al. 2025; METHODS.md
+ * mps_step.c — one MPS time step m -> m+1 (Xie et al. 2025; doc/theory.md
  * A.10 steps 1 and 7-11 with eps = 1, no grains):
  *
  *   1. neighbour search (cells of the largest r_e; CSR list; renumbering)

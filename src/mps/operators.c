@@ -1,6 +1,6 @@
 /*
  * operators.c — MPS operators, Xie et al. (2025) eqs. (7)-(11) and (15)
- * (METHODS.md A.3, A.5), on a CSR neighbour list:
+ * (doc/theory.md A.3, A.5), on a CSR neighbour list:
  *
  *   (7)  <n>_i       = sum_{j!=i} w_ij / eps_j
  *   (8)  <grad p>_i  = (d/n0) sum (p_j + p_i) r_ij / |r_ij|^2 w_ij / eps_j
@@ -12,7 +12,7 @@
  * with r_ij = r_j - r_i. (8) is the momentum-conserving (p_i + p_j) form: it
  * is exact for a linear field on a symmetric lattice but not zeroth-order
  * consistent (a constant field gives a force towards the fluid at a free
- * surface), which is what keeps particles apart (METHODS.md E1-05).
+ * surface), which is what keeps particles apart (doc/theory.md E1-05).
  * A zero distance (coincident particles) contributes nothing to the
  * direction-dependent sums: its direction is undefined.
  */

@@ -1,6 +1,6 @@
 /*
  * operators.h — MPS particle operators on a CSR neighbour list
- * (Xie et al. 2025 eqs. 7-11, 15; METHODS.md A.3, A.5).
+ * (Xie et al. 2025 eqs. 7-11, 15; doc/theory.md A.3, A.5).
  *
  * Every operator takes the weights of its own radius as an array aligned
  * with the neighbour list (w[k] for entry k of nl, zero beyond that

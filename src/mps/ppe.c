@@ -1,6 +1,6 @@
 /*
  * ppe.c — the pressure Poisson equation with the mixed source term
- * (Xie et al. 2025 eq. 12, Model A form with eps = 1; METHODS.md A.4):
+ * (Xie et al. 2025 eq. 12, Model A form with eps = 1; doc/theory.md A.4):
  *
  *   <lap P^{m+1}>_i = (1 - gamma) (rho/dt) <div u*>_i
  *                     - gamma (rho/dt^2) (<n^m>_i - n0)/n0
@@ -17,7 +17,7 @@
  *   c = 2d/(n0 lambda),  b_i = -RHS_i.
  * With porosity the matrix becomes non-symmetric (A.4 [P]); select
  * bicgstab then. `porousLaplacian symmetric` takes the pair weight
- * 2/(eps_i + eps_j) instead of 1/eps_j (METHODS.md A.4, the optional
+ * 2/(eps_i + eps_j) instead of 1/eps_j (doc/theory.md A.4, the optional
  * symmetric variant): A stays SPD and PCG applies, at half the cost per
  * iteration of BiCGSTAB's two products. The two agree where eps varies
  * slowly over r_e. The warm start is the pressure of the previous step.

@@ -1,7 +1,7 @@
 /*
  * surface_pressure.c — Dirichlet value of the free-surface particles
  * (`freeSurface { pressure extrapolated; }` in mpsSchemes; the paper's
- * default, METHODS.md A.4, is P = 0 at the surface particle itself).
+ * default, doc/theory.md A.4, is P = 0 at the surface particle itself).
  *
  * A surface particle stands for the water within dp/2 of its centre: the
  * surface where p = 0 lies dp/2 outside it, along the outward normal n.

@@ -1,5 +1,5 @@
 /*
- * walls.c — wall and dummy particles (METHODS.md A.9, after Koshizuka et
+ * walls.c — wall and dummy particles (doc/theory.md A.9, after Koshizuka et
  * al. 1998 and MLParticle-SJTU practice):
  *
  *   - wall particles (one layer) are unknowns of the PPE, have the wall

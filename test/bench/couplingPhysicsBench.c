@@ -1,8 +1,9 @@
 /* couplingPhysicsBench.c — cost of the coupling physics per fluid step
  * (src/coupling: pairs, porosity, interpolation, reaction, drag), on the
- * seed paper's two-phase dam break layout (METHODS.md A.12.2, A0-17): a
- * 0.05 x 0.1 x 0.1 m water column on the lattice dp, and the 7425 Table 1
- * beads (15 x 33 x 15, d = 2.7 mm) at its bottom; r_e,s = 4.1 dp (A0-13).
+ * two-phase dam break layout of Xie et al. 2025 (doc/theory.md A.12.2,
+ * A0-17): a 0.05 x 0.1 x 0.1 m water column on the lattice dp, and the
+ * 7425 Table 1 beads (15 x 33 x 15, d = 2.7 mm) at its bottom;
+ * r_e,s = 4.1 dp (A0-13).
  *
  * One fluid step of the sequential scheme (A.10) costs: 2 pair builds and
  * 2 porosity evaluations (steps 2 and 5), 1 interpolation (step 3),

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # mpsDemStress.sh — stress tests of the coupled MPS-DEM solver (issue 6;
-# METHODS.md A.7, A.8, A.12.1-A.12.2). A benchmark command, not part of
+# doc/theory.md A.7, A.8, A.12.1-A.12.2). A benchmark command, not part of
 # Alltest: it prints tables and exits 1 when a stated band is violated.
 #
 #   test/bench/mpsDemStress.sh [--quick] [--keep] [a] [b] [c]
@@ -26,7 +26,7 @@
 #                    above the floor) averaged over the last second within
 #                    5 % of rho g (eta - dp/2), eta the measured free
 #                    surface at x = 0.025 (the surface stands above 0.1 m:
-#                    METHODS.md A0-16).
+#                    doc/theory.md A0-16).
 # (b) perturbed runs, Model B, 3 seeds x deltaT x 0.8 and x 1.2 (6 runs per
 #     case) against the unperturbed run: fluid lattice jittered by +-0.1 dp,
 #     grain lattice by +-0.1 spacing (genParticles jitter/seed), on

@@ -9,7 +9,7 @@
 # Both programs run in tandem, THREADS OpenMP threads each (default 2: in
 # the sequential scheme they take turns, so each has the two cores while it
 # computes; the waiting side sleeps on a futex). PPE=symmetric runs the
-# PPE as porousLaplacian symmetric + pcg (METHODS.md A.4's SPD variant)
+# PPE as porousLaplacian symmetric + pcg (doc/theory.md A.4's SPD variant)
 # instead of the tutorial's 1/eps_j weights + bicgstab. From
 # log.mpsFluid: the MPS step's own timers (time per particle-step x
 # particles), the time in the coupling glue G (pairs, porosity,
@@ -94,7 +94,7 @@ for dp in "${dps[@]}"; do
           printf "%-8s %9s %7s %7s | %12.4f %12.4f %10.4f | %9.3f %9.3f | %8.1f %8.1f\n",
                  dp, np, nf, ng, m, c, m + c, pm, pd, (pm > 0 ? pm / m : 0), (pd > 0 ? pd / c : 0) }'
 done | tee "$TMP/table"
-# E1-24 (METHODS.md): MPS time per step ~ fluid particle count, DEM time
+# E1-24 (doc/theory.md): MPS time per step ~ fluid particle count, DEM time
 # independent of dp, each within 25 %, against the coarsest row
 awk '$1 ~ /^[0-9.]+$/ { n++; dp[n] = $1; np[n] = $2; nf[n] = $3; m[n] = $6; c[n] = $7 }
      END { if (n < 2) exit

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # mpsDemWorkPrecision.sh — work-precision of the MPS-DEM coupling scheme on
-# the root case (coarse 3-D two-phase dam break, METHODS.md A.12.2, Model
+# the root case (coarse 3-D two-phase dam break, doc/theory.md A.12.2, Model
 # B, 0.2 s; --quick 0.05 s): the two coupling schemes of
 # system/couplingDict (sequential = MSS, DEM first; concurrent = one-step
 # lag, both programs at once) times the DEM sub-stepping of

@@ -1,5 +1,5 @@
 /*
- * ppeBench.c — the PPE benchmark of toolchain.md §2 on our own solvers:
+ * ppeBench.c — the PPE benchmark of doc/libraries.md §2 on our own solvers:
  * jittered-lattice MPS Laplacians (csr_lattice_ppe), step 1 from zero, then
  * "step 2": particles moved by U(+-0.02), new matrix and right-hand side,
  * warm start from the step-1 pressure (the time-loop situation).

@@ -1,6 +1,6 @@
 #!/bin/bash
 # demBouncingSphere.sh — the bouncingSphere tutorial in quick variants
-# (METHODS.md E.2):
+# (doc/theory.md E.2):
 #   E2-04 restitution e = 0.9, wall and head-on, at 0.1, 0.5 and 1 m/s:
 #         linear within 1 %, hertz within 5 %
 #   E2-02 hertz, e = 1, 0.5 m/s head-on: contact time 1.287e-4 s (3 %) and

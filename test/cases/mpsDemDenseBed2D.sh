@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # mpsDemDenseBed2D.sh — a packed bed of touching grains (the paper's
-# simple-cubic packing, porosity 0.48; METHODS.md A.12.1) in still water,
+# simple-cubic packing, porosity 0.48; doc/theory.md A.12.1) in still water,
 # 2-D, dp = 5 mm, 45 beads of d = 5 mm, Model B, 0.5 s in tandem.
 #   genParticles with `grainVolume scale;` gives the fluid particles the
 #   volume fractions phi = eps (field volumeFraction); the solid volume it

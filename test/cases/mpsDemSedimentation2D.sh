@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # mpsDemSedimentation2D.sh — quick 2-D version of the sedimentation case
-# (METHODS.md A.12.1, E1-16, E1-18): 15 beads (d = 5 mm, 5 x 3, centres
+# (doc/theory.md A.12.1, E1-16, E1-18): 15 beads (d = 5 mm, 5 x 3, centres
 # 10 mm apart) released in a 0.05 m wide tank of still water 0.1 m deep,
 # dp = 5 mm, 0.8 s, Model A and Model B in tandem (~3 s each):
 #   both run to End without escapes;

@@ -1,6 +1,6 @@
 /*
  * demSolid — DEM solver for dry (standalone) granular flows, and the DEM
- * side of MPS-DEM coupling (METHODS.md A.6; DESIGN.md §4-5).
+ * side of MPS-DEM coupling (doc/theory.md A.6; doc/design.md §4-5).
  *
  * Reads   system/controlDict, system/demSolution, constant/demProperties,
  *         constant/g (optional), system/particleDict (walls; optional),

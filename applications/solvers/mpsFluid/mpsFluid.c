@@ -1,6 +1,6 @@
 /*
  * mpsFluid — incompressible MPS solver for free-surface flows (Xie et al.
- * 2025 with eps = 1; METHODS.md A.2-A.5, A.9, A.10; DESIGN.md §5).
+ * 2025 with eps = 1; doc/theory.md A.2-A.5, A.9, A.10; doc/design.md §5).
  *
  * Reads   system/controlDict, system/mpsSchemes, system/mpsSolution,
  *         constant/transportProperties, constant/g, constant/particlePatches

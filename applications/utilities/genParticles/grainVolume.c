@@ -4,7 +4,7 @@
  * coupled run starts at rest.
  *
  * With the fluid lattice filling the pores (`fill`, what Xie et al. 2025
- * §3.1 appear to do: METHODS.md A0-16) every particle
+ * §3.1 appear to do: doc/theory.md A0-16) every particle
  * inside a packed bed has the porosity-weighted number density (eq. 7,
  * sum of w/eps_j) of about n0/eps, twice n0 in a simple-cubic bed: the PPE
  * source (12)/(13) reads that as a compression of 100 % and, at dt = 1e-4

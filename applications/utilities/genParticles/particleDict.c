@@ -288,7 +288,7 @@ static int read_layers(struct gen_case *c, double kernel_radius_hint)
     if (kr > 100)
         return dict_error(c->d, "kernelRadius", SIM_ERR_DICT, "kernelRadius "
                           "%g (in units of dp) is not plausible", kr);
-    /* One wall layer and ceil(re/dp) - 1 dummy layers (METHODS.md A.9). */
+    /* One wall layer and ceil(re/dp) - 1 dummy layers (doc/theory.md A.9). */
     c->layers = (int)ceil(kr - 1e-9);
     return SIM_OK;
 }

@@ -1,6 +1,6 @@
 /*
  * drag.h — fluid-grain drag laws, selected by name (`dragModel ergunWenYu;`
- * in system/couplingDict; STYLE.md C3).
+ * in system/couplingDict; doc/design.md C3).
  *
  * Every law is written as a momentum-transfer coefficient per unit grain
  * volume,
@@ -9,7 +9,7 @@
  *
  * K [kg m^-3 s^-1] stays finite as eps -> 1 (where beta -> 0) and as
  * |u - v| -> 0 (each law evaluates C_d |u - v| in a form that does not
- * divide by Re, METHODS.md A.7), so F^d is finite, odd in (u - v) and zero
+ * divide by Re, doc/theory.md A.7), so F^d is finite, odd in (u - v) and zero
  * at u = v for every law: test/models/coupling checks this over the table.
  *
  * Re_k = eps_k rho_f d_k |u_k - v_k| / mu_f (28) in every law.
@@ -20,9 +20,9 @@
  *   coeff(f, eps, slip, d)  K for porosity eps (0 < eps <= 1), slip speed
  *                    |u - v| >= 0 [m/s] and diameter d [m]
  *   force_all(f, n, eps, d, V, u, v, F)  F[3k..] = K V (u - v) for n grains
- *                    (array-level entry, STYLE.md C4: one indirect call per
- *                    batch); u, v, F interleaved 3 per grain [m/s], [N];
- *                    V [m^3]; may run OpenMP threads.
+ *                    (array-level entry, doc/design.md C4: one indirect
+ *                    call per batch); u, v, F interleaved 3 per grain
+ *                    [m/s], [N]; V [m^3]; may run OpenMP threads.
  *   jump_eps         porosity of a documented discontinuity (the Ergun /
  *                    Wen-Yu switch), or 0 when the law is continuous in eps
  */

@@ -1,6 +1,6 @@
 /*
  * drag_ergun_wen_yu.c — Ergun (dense) / Wen-Yu (dilute) drag with the hard
- * switch of Xie et al. (2025) eqs. (25)-(28), METHODS.md A.7:
+ * switch of Xie et al. (2025) eqs. (25)-(28), doc/theory.md A.7:
  *
  *   F^d_k = beta_k/(1 - eps_k) (u_k - v_k) V_k                          (25)
  *   beta  = 150 (1-eps)^2/eps mu/d^2 + 1.75 (1-eps) rho |u-v|/d  eps <= 0.8

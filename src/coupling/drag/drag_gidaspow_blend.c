@@ -1,7 +1,7 @@
 /*
  * drag_gidaspow_blend.c — the Ergun and Wen-Yu laws of Xie et al. (2025)
  * eqs. (26)-(28) blended smoothly in the solid fraction (Huilin and
- * Gidaspow 2003), METHODS.md A0-12 option [P]:
+ * Gidaspow 2003), doc/theory.md A0-12 option [P]:
  *
  *   beta  = phi beta_Ergun + (1 - phi) beta_WenYu
  *   phi   = 1/2 + atan(262.5 (eps_s - 0.2)) / pi,   eps_s = 1 - eps

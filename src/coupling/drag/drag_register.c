@@ -1,4 +1,4 @@
-/* drag_register.c — the one list of drag laws (STYLE.md C3) and their
+/* drag_register.c — the one list of drag laws (doc/design.md C3) and their
  * selection from system/couplingDict (`dragModel <name>;`). */
 #include <stddef.h>
 

@@ -1,7 +1,7 @@
 /*
  * contact.c — the generic part of the contact law: derived material
  * constants, input validation, the fixed order in which sub-models are
- * called, and the Rayleigh step (METHODS.md A.6, eq. 38). No physics of a
+ * called, and the Rayleigh step (doc/theory.md A.6, eq. 38). No physics of a
  * particular sub-model lives here.
  */
 #include "dem/contact/contact.h"

@@ -1,6 +1,7 @@
 /*
- * contact.h — DEM contact laws assembled from named sub-models (STYLE.md C5,
- * LAMMPS granular_model, LIGGGHTS): normal, damping, tangential, rolling.
+ * contact.h — DEM contact laws assembled from named sub-models
+ * (doc/design.md C5, LAMMPS granular_model, LIGGGHTS): normal, damping,
+ * tangential, rolling.
  *
  * Geometry is computed once per contact (contact_geom); the sub-models only
  * turn geometry into forces, always in the same order:
@@ -10,7 +11,7 @@
  *   tangential  spring + Coulomb slider (eqs. 20, 22), history per contact
  *   rolling     resisting torque
  *
- * Notation and sign convention (METHODS.md A.6): for grains k and l the unit
+ * Notation and sign convention (doc/theory.md A.6): for grains k and l the unit
  * normal n points from k to l (for a wall: from the grain into the wall);
  * delta = R_k + R_l - |x_l - x_k| > 0 in contact; the contact-point relative
  * velocity is v_kl = (v_k - v_l) + (R_k w_k + R_l w_l) x n, its normal part
@@ -18,7 +19,7 @@
  *   F_k = -(F_el + eta^n vn) n + F_t ,
  * the force on l is -F_k (Newton's third law holds by construction).
  *
- * Material (single material, METHODS.md A.6 and A0-09/A0-10):
+ * Material (single material, doc/theory.md A.6 and A0-09/A0-10):
  *   E* = E / (2 (1 - nu^2)),  R* = R_k R_l/(R_k + R_l) (wall: R_k),
  *   m* = m_k m_l/(m_k + m_l) (wall: m_k),
  *   chi = (4/3) E* sqrt(R*)  — eq. (21) generalised to unequal radii; for

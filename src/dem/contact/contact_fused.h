@@ -1,7 +1,7 @@
 /*
  * contact_fused.h — the default law (normal hertz, damping restitution,
  * tangential coulomb, rolling none) written out in one inline function for
- * the force loop (STYLE.md C4: per-pair calls through four function
+ * the force loop (doc/design.md C4: per-pair calls through four function
  * pointers cost about a tenth of the DEM step). It computes exactly what
  * contact_eval computes with those sub-models (normal_hertz.c,
  * damping_restitution.c, tangential_coulomb.c); test_contact_laws checks

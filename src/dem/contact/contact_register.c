@@ -1,6 +1,6 @@
 /*
  * contact_register.c — the only lists to edit when a contact sub-model is
- * added (STYLE.md C3).
+ * added (doc/design.md C3).
  */
 #include <stddef.h>
 

@@ -1,6 +1,6 @@
 /*
  * damping_restitution.c — viscous damping from the restitution coefficient,
- * METHODS.md A.6 eqs. (23)-(24) with the effective mass (A0-10):
+ * doc/theory.md A.6 eqs. (23)-(24) with the effective mass (A0-10):
  *
  *   eta^n = -2 ln(e) sqrt( kn m* / (ln^2 e + pi^2) ) = 2 beta sqrt(kn m*)
  *   eta^t = 2 beta sqrt(kt m*)

@@ -1,7 +1,7 @@
 /*
  * damping_restitution_constant.c — eqs. (23)-(24) of Xie et al. 2025 as
  * printed, with the Hertz coefficient chi^n of eq. (21) taken as the
- * stiffness (METHODS.md A.6, A0-09; effective mass, A0-10):
+ * stiffness (doc/theory.md A.6, A0-09; effective mass, A0-10):
  *
  *   eta^n = 2 beta sqrt(chi^n m*),  eta^t = 2 beta sqrt(chi^t m*),
  *   beta = -ln e / sqrt(ln^2 e + pi^2),  chi^t = chi^n ratio_t (eq. 22)
@@ -16,7 +16,7 @@
  * such as those near the top of a packed column, are damped instead of
  * ringing for seconds (the collective modes of a column of Hertz contacts
  * have a damping ratio of ~beta x their frequency/the contact frequency,
- * 0.0025 for the 15-bead columns of METHODS.md A.12.1 with restitution).
+ * 0.0025 for the 15-bead columns of doc/theory.md A.12.1 with restitution).
  * Use it to reproduce the paper's DEM; `restitution` reproduces e.
  */
 #include <math.h>
@@ -38,6 +38,6 @@ static void eval_restitution_constant(const struct contact_coeffs *c,
 const struct contact_damping_ops contact_damping_restitution_constant = {
     .name = "restitutionConstant",
     .reference = "Xie et al. 2025 eqs. 23-24 with chi^n of eq. 21 as the "
-                 "stiffness (METHODS.md A0-09)",
+                 "stiffness (doc/theory.md A0-09)",
     .eval = eval_restitution_constant,
 };

@@ -1,5 +1,5 @@
 /*
- * normal_hertz.c — Hertz law, option (H) of METHODS.md A0-09 (the default):
+ * normal_hertz.c — Hertz law, option (H) of doc/theory.md A0-09 (the default):
  *
  *   F_el = chi^n delta^{3/2},        chi^n = (4/3) E* sqrt(R*)        (21)
  *   kn   = dF_el/d delta = (3/2) chi^n delta^{1/2}
@@ -27,6 +27,7 @@ static void eval_hertz(const struct contact_coeffs *c,
 
 const struct contact_normal_ops contact_normal_hertz = {
     .name = "hertz",
-    .reference = "Hertz 1882; Xie et al. 2025 eqs. 19-22, METHODS A0-09 (H)",
+    .reference = "Hertz 1882; Xie et al. 2025 eqs. 19-22, "
+                 "doc/theory.md A0-09 (H)",
     .eval = eval_hertz,
 };

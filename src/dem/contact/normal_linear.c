@@ -1,5 +1,5 @@
 /*
- * normal_linear.c — linear spring, METHODS.md A.6 eq. (19), option (L) of
+ * normal_linear.c — linear spring, doc/theory.md A.6 eq. (19), option (L) of
  * A0-09:
  *
  *   F_el = chi^n delta,   kn = chi^n,   kt = chi^t = chi^n/(2 + nu)  (22)

@@ -1,5 +1,6 @@
 /*
- * rolling_none.c — no rolling resistance (the seed's choice, A.6).
+ * rolling_none.c — no rolling resistance (the choice of Xie et al. 2025,
+ * doc/theory.md A.6).
  */
 #include "dem/contact/contact.h"
 

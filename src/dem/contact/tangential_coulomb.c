@@ -1,6 +1,6 @@
 /*
  * tangential_coulomb.c — tangential spring-dashpot with a Coulomb slider,
- * METHODS.md A.6 eqs. (20), (22), (24):
+ * doc/theory.md A.6 eqs. (20), (22), (24):
  *
  *   delta^t(t) = P_n delta^t_0 |delta^t_0|/|P_n delta^t_0| + (t - t_0) v^t
  *   F^t        = -kt delta^t - eta^t v^t               if |F^t| <= mu |F^n|
@@ -10,8 +10,9 @@
  * contact pair, kept across neighbour rebuilds by the neighbour list); P_n
  * projects it onto the current tangent plane and the magnitude is kept
  * (the rotation of A.6 [P]). On slip the spring is rescaled to
- * |delta^t| = mu |F^n|/kt (A0-11, seed form: slip along -delta^t). When the
- * spring is still zero the slider acts along the trial force instead.
+ * |delta^t| = mu |F^n|/kt (A0-11, the form of Xie et al. 2025: slip along
+ * -delta^t). When the spring is still zero the slider acts along the trial
+ * force instead.
  * Reference: Cundall and Strack (1979); Xie et al. (2025) eqs. (20), (22).
  */
 #include <math.h>

@@ -1,5 +1,5 @@
 /*
- * dem_fo.h — DEM function objects (STYLE.md C14): kineticEnergy,
+ * dem_fo.h — DEM function objects (doc/design.md C14): kineticEnergy,
  * wallForces, front, bedHeight, grainState, contacts. They read the solver's struct dem through
  * fo_scene.solver; demSolid passes dem_fo_table to fo_list_create beside
  * fo_generic_table.

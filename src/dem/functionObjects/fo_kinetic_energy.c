@@ -2,7 +2,7 @@
  * fo_kinetic_energy.c — total kinetic energy of the grains,
  *   E_k = sum_k (1/2 m_k |v_k|^2 + 1/2 I_k |w_k|^2),
  * the settling criterion of E2-09 and Fig. 3 of Xie et al. (2025) (which
- * plots the translational part, METHODS.md A.12.1).
+ * plots the translational part, doc/theory.md A.12.1).
  * Columns: time, E_trans, E_rot, E_total [J], grains, contacts (grain-grain,
  * grain-wall). Keys: none beyond the schedule.
  */

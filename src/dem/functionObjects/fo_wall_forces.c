@@ -1,7 +1,7 @@
 /*
  * fo_wall_forces.c — contact force that the grains exert on each wall
  * patch, F_p = -sum over contacts with walls of patch p of F^C (the "load
- * of solids on the structure", METHODS.md A.9 and A.12.3-4). The value is
+ * of solids on the structure", doc/theory.md A.9 and A.12.3-4). The value is
  * the instantaneous force at the accepted state ending the step.
  * Columns: time, then Fx Fy Fz [N] per patch that has walls.
  * Keys: patches (names ...);  optional, default every wall patch.
@@ -98,7 +98,7 @@ static void destroy(void *data)
 
 const struct fo_ops dem_fo_wall_forces = {
     .name = "wallForces",
-    .reference = "METHODS.md A.9 (load of solids on a structure)",
+    .reference = "doc/theory.md A.9 (load of solids on a structure)",
     .file = "",
     .create = create,
     .header = header,

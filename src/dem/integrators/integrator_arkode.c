@@ -1,10 +1,10 @@
 /*
  * integrator_arkode.c — error-controlled explicit Runge-Kutta sub-stepping
- * with SUNDIALS ARKode ERKStep 6.4.1 (toolchain.md §1), for
+ * with SUNDIALS ARKode ERKStep 6.4.1 (doc/libraries.md §1), for
  *
  *   y = (x, v, w),  dx/dt = v,  dv/dt = a(x, v, w),  dw/dt = alpha(x, v, w)
  *
- * (METHODS.md A.6, eqs. 17-18). Step size: ARKode's error control with
+ * (doc/theory.md A.6, eqs. 17-18). Step size: ARKode's error control with
  * rtol and a vector atol (positions, velocities, spins), bounded by a
  * stability function:
  *

@@ -1,4 +1,4 @@
-/* integrator_register.c — the list of DEM integrators (STYLE.md C3). */
+/* integrator_register.c — the list of DEM integrators (doc/design.md C3). */
 #include <stddef.h>
 
 #include "dem/integrators/integrator.h"

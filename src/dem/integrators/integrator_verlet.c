@@ -1,12 +1,12 @@
 /*
- * integrator_verlet.c — fixed-step velocity Verlet (METHODS.md A.6 [P]),
+ * integrator_verlet.c — fixed-step velocity Verlet (doc/theory.md A.6 [P]),
  * the reference integrator:
  *
  *   v^{n+1/2} = v^n + dt/2 a^n,            w^{n+1/2} = w^n + dt/2 alpha^n
  *   x^{n+1}   = x^n + dt v^{n+1/2}
  *   a^{n+1}   = a(x^{n+1}, v^{n+1/2}, w^{n+1/2})   (velocity-dependent
  *               forces use the half-step velocity: first order in them,
- *               the usual DEM practice; toolchain.md §1)
+ *               the usual DEM practice; doc/libraries.md §1)
  *   v^{n+1}   = v^{n+1/2} + dt/2 a^{n+1},  w likewise
  *
  * The step is dt = dt_fraction * dt_R (eq. 38) unless given; a given step

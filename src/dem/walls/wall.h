@@ -9,7 +9,7 @@
  * has one contact, and one tangential history, per face. Every other wall
  * gives at most one contact per grain (closest surface point). A wall
  * belongs to a named patch, which sums the contact force it receives
- * (METHODS.md A.9, "load of solids on a structure").
+ * (doc/theory.md A.9, "load of solids on a structure").
  */
 #ifndef MPSDEM_DEM_WALL_H
 #define MPSDEM_DEM_WALL_H

@@ -2,7 +2,7 @@
  * kernel.h — MPS weight functions w(r; r_e), selected by name
  * (`kernel zhang2014;` in system/mpsSchemes).
  *
- * The kernel is a per-pair law, so (STYLE.md C4) its ops table has an
+ * The kernel is a per-pair law, so (doc/design.md C4) its ops table has an
  * array-level entry: the solver evaluates the weights of a whole neighbour
  * list once per step and operator radius, one indirect call per batch.
  *

@@ -1,6 +1,6 @@
 /*
  * kernel_koshizuka1996.c — the original MPS kernel of Koshizuka and Oka
- * (1996), eq. (3) there (METHODS.md B.1):
+ * (1996), eq. (3) there (doc/theory.md B.1):
  *
  *     w(r) = r_e / r - 1      0 < r < r_e
  *     w(r) = 0                r >= r_e

@@ -1,4 +1,4 @@
-/* kernel_register.c — the one list of MPS kernels (STYLE.md C3). */
+/* kernel_register.c — the one list of MPS kernels (doc/design.md C3). */
 #include <stddef.h>
 
 #include "mps/kernel/kernel.h"

@@ -1,13 +1,13 @@
 /*
  * kernel_zhang2014.c — the MPS kernel of Zhang, Wan and Hino (2014), used by
- * MLParticle-SJTU and by Xie et al. (2025) eq. (6) (METHODS.md A.3):
+ * MLParticle-SJTU and by Xie et al. (2025) eq. (6) (doc/theory.md A.3):
  *
  *     w(r) = r_e / (0.85 r + 0.15 r_e) - 1      0 <= r < r_e
  *     w(r) = 0                                  r >= r_e
  *
  * w(0) = 1/0.15 - 1 = 5.667: finite, so that two particles that come very
  * close do not produce an unbounded repulsion (the reason for the kernel).
- * w(r_e) = 0, continuous. Lattice constants: METHODS.md E1-01/E1-02.
+ * w(r_e) = 0, continuous. Lattice constants: doc/theory.md E1-01/E1-02.
  *
  * Reference: Y.X. Zhang, D.C. Wan, T. Hino (2014), Comparative study of MPS
  * method and level-set method for sloshing flows, J. Hydrodyn. 26, 577-585.

@@ -1,6 +1,6 @@
 /*
  * stabiliser.h — optional robustness additions that are not part of the
- * paper's method (METHODS.md A.10 [P]): off by default and named in
+ * paper's method (doc/theory.md A.10 [P]): off by default and named in
  * system/mpsSchemes (`collision none;`, `shifting none;`).
  *
  * apply(s, dt) is called once per step: collision on the predicted

@@ -1,5 +1,5 @@
 /* test_drag_models.c — property tests over every registered drag law
- * (STYLE.md C12 level 1): named and referenced; finite; odd in (u - v)
+ * (doc/design.md C12 level 1): named and referenced; finite; odd in (u - v)
  * bit for bit; zero at u = v; monotone non-decreasing in |u - v| along any
  * direction; continuous in eps except at the law's documented jump_eps;
  * and the array entry equal to the scalar coefficient. A law added to

@@ -1,5 +1,5 @@
 /* test_drag_reference.c — small-system reference data per drag law
- * (STYLE.md C12 level 2, LAMMPS force-style tests): 32 grains from a fixed
+ * (doc/design.md C12 level 2, LAMMPS force-style tests): 32 grains from a fixed
  * seed (porosity 0.35..1, diameter 0.5..5 mm, slips up to ~1 m/s in
  * water), the force of every registered law against the stored values in
  * drag_reference.dat, relative tolerance `epsilon` from that file.

@@ -1,6 +1,6 @@
 /*
  * test_contact_laws.c — property and reference checks of the DEM contact
- * sub-models (STYLE.md C12 levels 1 and 2; METHODS.md E.2):
+ * sub-models (doc/design.md C12 levels 1 and 2; doc/theory.md E.2):
  *   - every combination in the registries obeys Newton's third law and
  *     conserves angular momentum pair-wise;
  *   - E2-01 Rayleigh step; E2-02 Hertz contact time and overlap;

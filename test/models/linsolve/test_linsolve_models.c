@@ -1,6 +1,6 @@
 /*
  * test_linsolve_models.c — every registered solver with every registered
- * preconditioner (STYLE.md C12 level 1): a combination that is accepted
+ * preconditioner (doc/design.md C12 level 1): a combination that is accepted
  * must reach its tolerance on 2-D and 3-D MPS-like SPD systems and match
  * CHOLMOD within the forward-error bound of linsolve_testutil.h; one that is
  * refused must say why; a non-symmetric system must be solved by every

@@ -1,5 +1,5 @@
 /* test_kernels.c — property tests over every registered MPS kernel
- * (STYLE.md C12 level 1): compact support, non-negative, non-increasing,
+ * (doc/design.md C12 level 1): compact support, non-negative, non-increasing,
  * the array entry equal to the scalar one bit for bit, and n0 > 0 with
  * lambda between dp^2 and r_e^2 on the lattice. */
 #include <setjmp.h>

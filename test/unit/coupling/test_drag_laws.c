@@ -16,7 +16,7 @@
 #include "core/log.h"
 #include "coupling/drag/drag.h"
 
-/* Water and the Table 1 glass bead (METHODS.md A.11). */
+/* Water and the Table 1 glass bead (doc/theory.md A.11). */
 static const struct drag_fluid water = { 1000.0, 1.0e-3 };
 static const double D = 2.7e-3, RHO_S = 2500.0, G = 9.81;
 

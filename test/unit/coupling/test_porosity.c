@@ -1,6 +1,6 @@
 /* test_porosity.c — the coupling kernel and porosity (Xie et al. 2025 eqs.
  * 29-31) and the Shepard interpolation to grain centres (eqs. 32-33,
- * A0-14): METHODS.md checks E1-09, E1-10 and E1-11. */
+ * A0-14): doc/theory.md checks E1-09, E1-10 and E1-11. */
 #include <setjmp.h>
 #include <stdarg.h>
 #include <stddef.h>
@@ -51,7 +51,7 @@ static void test_ns(void **state)
             double q = ns_quadrature(dim, re), a = coupling_ns(dim, re);
             assert_true(fabs(q - a) <= 1e-6 * a);
         }
-        /* METHODS.md quotes n_s = 1.496000 r_e^3 (10 pi/21 = 1.4959965) */
+        /* doc/theory.md quotes n_s = 1.496000 r_e^3 (10 pi/21 = 1.4959965) */
         assert_true(fabs(coupling_ns(3, re) / pow(re, 3) - 1.496) < 5e-6);
         assert_true(coupling_ws(0, re) == 1.0);
         assert_true(coupling_ws(re, re) == 0.0);
@@ -105,7 +105,7 @@ static void lattice_porosity(int dim, double ratio, int np, const double *xp,
 }
 
 /*
- * E1-10: 1 - pi/6 inside a simple-cubic packing. METHODS.md states
+ * E1-10: 1 - pi/6 inside a simple-cubic packing. doc/theory.md states
  * +-0.001 / 0.003 / 0.012 for r_e,s = 4.1 / 3.0 / 2.1 d "at random
  * points". The lattice sum itself (computed independently, in Python, by
  * direct summation) deviates more than that at special points: at a grain

@@ -1,5 +1,5 @@
 /* test_porosity_pairs.c — the grain / MPS-particle pair search by cells
- * against the O(ng np) loop (STYLE.md C12: SWIFT test27cells), in 3-D and
+ * against the O(ng np) loop (doc/design.md C12: SWIFT test27cells), in 3-D and
  * 2-D, with particles outside the grain box, a non-finite particle, no
  * grains, a radius larger than the cloud, and thinly spread grains (the
  * cell cap); a non-finite grain is an error. */

@@ -13,7 +13,7 @@
 #include "dem/dem.h"
 #include "dem/integrators/integrator.h"
 
-/* Table 1 glass beads (METHODS.md A.11). */
+/* Table 1 glass beads (doc/theory.md A.11). */
 #define T1_E 1.0e8
 #define T1_NU 0.2
 #define T1_RHO 2500.0

@@ -222,7 +222,7 @@ static void round_trip(int binary)
 static void test_round_trip_binary(void **state) { (void)state; round_trip(1); }
 static void test_round_trip_ascii(void **state) { (void)state; round_trip(0); }
 
-/* The binary payload follows toolchain.md §3: no line breaks inside the
+/* The binary payload follows doc/libraries.md §3: no line breaks inside the
  * base64 and a separately padded UInt64 header; cells are vertices. */
 static void test_binary_layout(void **state)
 {

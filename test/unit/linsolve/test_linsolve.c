@@ -1,7 +1,7 @@
 /*
  * test_linsolve.c — the PPE solvers of src/linsolve against CHOLMOD and a
  * dense LU, on MPS-like Laplacians of a jittered lattice with a Dirichlet
- * top layer (toolchain.md §2), plus warm start, failure and bad input.
+ * top layer (doc/libraries.md §2), plus warm start, failure and bad input.
  */
 #include "linsolve_testutil.h"
 
@@ -66,7 +66,7 @@ static void test_pcg_jacobi_matches_cholmod(void **state)
     (void)state;
     int i2 = solve_check(&s2, "pcg", "jacobi");
     int i3 = solve_check(&s3, "pcg", "jacobi");
-    /* Iteration counts of the same order as toolchain.md §2 (40^2 is
+    /* Iteration counts of the same order as doc/libraries.md §2 (40^2 is
      * smaller than its 300^2; 12^3 with re 3.1 is small). */
     assert_in_range(i2, 50, 600);
     assert_in_range(i3, 10, 200);
@@ -78,7 +78,7 @@ static void test_ic0_fewer_iterations_than_jacobi(void **state)
     int ij = solve_check(&s2, "pcg", "jacobi");
     int ii = solve_check(&s2, "pcg", "ic0");
     int id = solve_check(&s2, "pcg", "dic");
-    /* IC(0) cut iterations 3-4x in toolchain.md §2; DIC lies between. */
+    /* IC(0) cut iterations 3-4x in doc/libraries.md §2; DIC lies between. */
     assert_true(2 * ii < ij);
     assert_true(id < ij);
     assert_true(ii <= id);

@@ -3,7 +3,7 @@
  * linear fields on jittered and truncated clouds and falls back where its
  * matrix is singular; a 2-D still tank with corrected gradient, wall and
  * dummy pressure extrapolated from the fluid, surface pressure extrapolated
- * to dp/2 and Lind shifting stays hydrostatic (METHODS.md E1-07/E1-08 in
+ * to dp/2 and Lind shifting stays hydrostatic (doc/theory.md E1-07/E1-08 in
  * 2-D: L2 < 1 %, max |u| < 1 % sqrt(g h) over 0.25 s; measured 0.45 % and
  * 0.39 %). */
 #include <setjmp.h>

@@ -1,4 +1,4 @@
-/* test_operators.c — MPS lattice constants and operators against METHODS.md
+/* test_operators.c — MPS lattice constants and operators against doc/theory.md
  * E1-01 ... E1-06, on lattices built particle by particle and searched with
  * the cell/neighbour lists that the solver uses. */
 #include <setjmp.h>

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# validation/check.sh [CASE...] — the checks of METHODS.md E1-16, E1-17 and
+# validation/check.sh [CASE...] — the checks of doc/theory.md E1-16, E1-17 and
 # E1-18 on finished runs of this tutorial (default: modelA modelB), from
 # their postProcessing/ (function objects of system/controlDict):
 #

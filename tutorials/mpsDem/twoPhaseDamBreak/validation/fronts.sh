@@ -9,7 +9,7 @@
 #   - validation/fronts.png (gnuplot): both fronts against time, all runs.
 # Fronts (function objects fluidFront and sedimentFront): water, the largest
 # x of a fluid particle with n >= 0.5 n0; sediment, the leading grain of the
-# largest touching pack (METHODS.md A.12.2 [P]).
+# largest touching pack (doc/theory.md A.12.2 [P]).
 cd "${0%/*}/.." || exit 1
 runs=("$@")
 [ ${#runs[@]} -eq 0 ] && runs=(model*-dp*/)

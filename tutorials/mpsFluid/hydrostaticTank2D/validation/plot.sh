@@ -1,6 +1,6 @@
 #!/bin/sh
 # plot.sh [CASE] [WINDOW] [PNG] — picture of the still-water checks of
-# METHODS.md E1-08 for a finished run of hydrostaticTank2D or hydrostaticTank
+# doc/theory.md E1-08 for a finished run of hydrostaticTank2D or hydrostaticTank
 # (the 3-D case's validation/plot.sh calls this one):
 #   (a) time-averaged pressure of each fluid particle over the last WINDOW
 #       seconds (default 0.2) against its depth h - y, with rho g (h - y);
