@@ -1,7 +1,7 @@
 /*
  * couple_fluid.c — the fluid side of the sequential MPS-DEM step (Xie et al.
- * 2025 eqs. 31-33, 36 with the momentum sources of eqs. 2 and 5; METHODS.md
- * A.7, A.8 (MSS), A.10 steps 2-3 and 5-7, A0-13 to A0-15).
+ * 2025 eqs. 31-33, 36 with the momentum sources of eqs. 2 and 5;
+ * doc/theory.md A.7, A.8 (MSS), A.10 steps 2-3 and 5-7, A0-13 to A0-15).
  *
  *   eps_i   = 1 - (1/n_s) sum_k w_s(|r_ik|) V_k                        (31)
  *   eps_k, u_k = Shepard averages of eps_i, u_i over fluid and wall   (32-33)

@@ -1,7 +1,7 @@
 /*
  * couple_fluid.h — the fluid side of a coupled MPS-DEM run: what mpsFluid
- * does around each mps_step() (METHODS.md A.10, sequential MSS, A0-15;
- * DESIGN.md §4). It connects the channel (channel.h, protocol.h), the
+ * does around each mps_step() (doc/theory.md A.10, sequential MSS, A0-15;
+ * doc/design.md §4). It connects the channel (channel.h, protocol.h), the
  * coupling physics (pairs, porosity, interp, reaction, models) and the MPS
  * solver's hooks inv_eps and f_ext (mps.h).
  *

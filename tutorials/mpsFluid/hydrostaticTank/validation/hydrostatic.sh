@@ -1,6 +1,7 @@
 #!/bin/sh
-# hydrostatic.sh CASE [WINDOW [DIR]] — still-water checks of METHODS.md E1-07/E1-08
-# on the fluid.vtu snapshots of the last WINDOW seconds (default 0.2):
+# hydrostatic.sh CASE [WINDOW [DIR]] — still-water checks of
+# doc/theory.md E1-07/E1-08 on the fluid.vtu snapshots of the last WINDOW
+# seconds (default 0.2):
 #   L2      relative L2 error of the time-averaged fluid pressure (per
 #           particle id) against rho g (h - z), h the initial water depth
 #   umax    largest fluid speed in the window, and the same / sqrt(g h)
