@@ -2,10 +2,12 @@
 #include "core/app.h"
 
 #include <errno.h>
+#include <fcntl.h>
 #include <limits.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/file.h>
 #include <sys/stat.h>
 #include <time.h>
 #include <unistd.h>
@@ -144,6 +146,38 @@ int app_read_dict(const struct app *a, const char *rel, struct dict **out)
     char path[4096];
     app_path(a, rel, path, sizeof path);
     return dict_read(path, out);
+}
+
+int app_lock_case(const struct app *a)
+{
+    char rel[256], path[4400];
+    snprintf(rel, sizeof rel, ".%s.lock", a->name);
+    app_path(a, rel, path, sizeof path);
+    /* The descriptor stays open (and locked) for the life of the process. */
+    int fd = open(path, O_RDWR | O_CREAT | O_CLOEXEC | O_NOFOLLOW, 0600);
+    if (fd < 0)
+        return sim_error(SIM_ERR_IO, "cannot open the case lock '%s': %s",
+                         path, strerror(errno));
+    if (flock(fd, LOCK_EX | LOCK_NB) != 0) {
+        int e = errno;
+        char pid[32] = "";
+        ssize_t k = pread(fd, pid, sizeof pid - 1, 0);
+        pid[k > 0 ? k : 0] = '\0';
+        pid[strcspn(pid, "\n")] = '\0';
+        close(fd);
+        if (e == EWOULDBLOCK)
+            return sim_error(SIM_ERR_IO, "%s is already running on case "
+                             "'%s' (pid %s, lock %s): wait for it or stop "
+                             "it; nothing of its output was touched",
+                             a->name, a->case_abs, pid[0] ? pid : "?", path);
+        return sim_error(SIM_ERR_IO, "cannot lock '%s': %s", path,
+                         strerror(e));
+    }
+    char pid[32];
+    int n = snprintf(pid, sizeof pid, "%ld\n", (long)getpid());
+    if (ftruncate(fd, 0) != 0 || pwrite(fd, pid, (size_t)n, 0) != n)
+        log_warn("could not write the pid into the case lock '%s'", path);
+    return SIM_OK;
 }
 
 void app_fatal(const struct app *a, int rc)

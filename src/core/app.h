@@ -50,6 +50,14 @@ void app_init(struct app *a, const char *name, const char *description,
               int argc, char **argv, const struct app_option *opts,
               int allow_args);
 
+/* Take the case for this program before it touches any output: an
+ * exclusive flock(2) on "<case>/.<program>.lock", held until the process
+ * ends (the kernel drops it on any exit, a kill included, so a lock is
+ * never stale). A second start of the same program on the same case gets
+ * SIM_ERR_IO with a message naming the running pid, and must leave before
+ * it truncates a log, a .pvd or a postProcessing file of the first. */
+int app_lock_case(const struct app *a);
+
 /* "<case>/<rel>" into buf (without a "./" prefix for the default case). */
 const char *app_path(const struct app *a, const char *rel, char *buf,
                      size_t n);

@@ -4,6 +4,7 @@
 #include <dirent.h>
 #include <errno.h>
 #include <math.h>
+#include <signal.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -28,24 +29,59 @@ const char *time_name(double t, int precision, char *buf, size_t n)
     return buf;
 }
 
-int time_latest(const char *case_dir, double *t, char *name, size_t n)
+/* A time directory name: a finite number ("0.05", "1e-05"). */
+static int time_dir_value(const char *name, double *v)
+{
+    char *end;
+    *v = strtod(name, &end);
+    return end != name && *end == '\0' && isfinite(*v);
+}
+
+/* The first of `need` that dir lacks (a regular file), or NULL. */
+static const char *missing_file(const char *dir, const char *const *need)
+{
+    for (; need && *need; need++) {
+        char path[4400];
+        struct stat st;
+        snprintf(path, sizeof path, "%s/%s", dir, *need);
+        if (stat(path, &st) != 0 || !S_ISREG(st.st_mode))
+            return *need;
+    }
+    return NULL;
+}
+
+int time_latest(const char *case_dir, const char *const *need, double *t,
+                char *name, size_t n)
 {
     DIR *d = opendir(case_dir);
     if (!d)
         return sim_error(SIM_ERR_IO, "cannot open case directory '%s': %s",
                          case_dir, strerror(errno));
-    int found = 0;
+    int found = 0, nskip = 0;
+    double skip_t[8];
+    char skipped[512] = "";
     struct dirent *e;
     while ((e = readdir(d))) {
-        char *end;
-        double v = strtod(e->d_name, &end);
-        if (end == e->d_name || *end != '\0' || !isfinite(v))
+        double v;
+        if (!time_dir_value(e->d_name, &v))
             continue;
         char path[4096];
         struct stat st;
         snprintf(path, sizeof path, "%s/%s", case_dir, e->d_name);
         if (stat(path, &st) != 0 || !S_ISDIR(st.st_mode))
             continue;
+        const char *lack = missing_file(path, need);
+        if (lack) {
+            /* Remembered to be reported if newer than the one chosen. */
+            if (nskip < 8) {
+                size_t k = strlen(skipped);
+                snprintf(skipped + k, sizeof skipped - k, "%s%s (no %s)",
+                         nskip ? ", " : "", e->d_name, lack);
+                skip_t[nskip] = v;
+            }
+            nskip++;
+            continue;
+        }
         if (!found || v > *t) {
             *t = v;
             snprintf(name, n, "%s", e->d_name);
@@ -54,9 +90,73 @@ int time_latest(const char *case_dir, double *t, char *name, size_t n)
     }
     closedir(d);
     if (!found)
-        return sim_error(SIM_ERR_IO, "no time directory in case '%s'",
-                         case_dir);
+        return sim_error(SIM_ERR_IO, "no time directory in case '%s'%s%s%s",
+                         case_dir, nskip ? " that holds every cloud of the "
+                         "run; skipped " : "", skipped, nskip > 8 ? ", ..."
+                         : "");
+    int newer = 0;
+    for (int k = 0; k < nskip && k < 8; k++)
+        newer += skip_t[k] > *t;
+    if (newer)
+        log_warn("latestTime: %s chosen; newer time directories that do not "
+                 "hold every cloud of the run are skipped: %s", name,
+                 skipped);
     return SIM_OK;
+}
+
+int time_clean_debris(const char *case_dir)
+{
+    DIR *d = opendir(case_dir);
+    if (!d)
+        return sim_error(SIM_ERR_IO, "cannot open case directory '%s': %s",
+                         case_dir, strerror(errno));
+    struct dirent *e;
+    int removed = 0;
+    while ((e = readdir(d))) {
+        double v;
+        int is_time = time_dir_value(e->d_name, &v);
+        if (!is_time && strncmp(e->d_name, "failed.", 7)
+            && strcmp(e->d_name, "."))
+            continue;
+        char dir[4200];
+        snprintf(dir, sizeof dir, "%s/%s", case_dir, e->d_name);
+        DIR *sub = opendir(dir);
+        if (!sub)
+            continue;
+        struct dirent *f;
+        int files = 0;
+        while ((f = readdir(sub))) {
+            if (!strcmp(f->d_name, ".") || !strcmp(f->d_name, ".."))
+                continue;
+            files++;
+            /* "<file>.tmp.<pid>" of a writer that no longer runs (killed
+             * in the middle of a write: xmlio.c renames on success and
+             * unlinks on any error it sees). */
+            const char *tmp = strstr(f->d_name, ".tmp.");
+            char *end;
+            long pid = tmp ? strtol(tmp + 5, &end, 10) : 0;
+            if (!tmp || pid <= 0 || *end || (kill((pid_t)pid, 0) == 0
+                                             || errno != ESRCH))
+                continue;
+            char path[4500];
+            snprintf(path, sizeof path, "%s/%s", dir, f->d_name);
+            if (unlink(path) == 0) {
+                log_warn("Removed '%s', left by a run killed while writing",
+                         path);
+                files--;
+                removed++;
+            }
+        }
+        closedir(sub);
+        /* An empty time directory is what a failed write leaves (a full
+         * disk): latestTime must not take it for a start time. */
+        if (is_time && files == 0 && v > 0 && rmdir(dir) == 0) {
+            log_warn("Removed the empty time directory '%s'", dir);
+            removed++;
+        }
+    }
+    closedir(d);
+    return removed;
 }
 
 /* Enough significant digits that consecutive write times get distinct
@@ -120,13 +220,16 @@ static int read_settings(const struct dict *c, struct run_time *t)
     return SIM_OK;
 }
 
-int time_read(const struct dict *c, const char *case_dir, struct run_time *t)
+int time_read(const struct dict *c, const char *case_dir,
+              const char *const *need, struct run_time *t)
 {
     memset(t, 0, sizeof *t);
     TRY(read_settings(c, t));
+    time_clean_debris(case_dir);
     if (t->start_latest) {
         char name[64];
-        int rc = time_latest(case_dir, &t->start_time, name, sizeof name);
+        int rc = time_latest(case_dir, need, &t->start_time, name,
+                             sizeof name);
         if (rc)
             return dict_error(c, "startFrom", rc, "startFrom latestTime: %s",
                               sim_error_message());
@@ -241,17 +344,23 @@ void time_increment(struct run_time *t)
     time_name(t->value, t->precision, t->name, sizeof t->name);
 }
 
-int time_make_dir(const struct run_time *t, const char *case_dir, char *dir,
-                  size_t n)
+int time_make_dir(const struct run_time *t, const char *case_dir,
+                  const char *prefix, char *dir, size_t n)
 {
     if (!strcmp(case_dir, "."))
-        snprintf(dir, n, "%s", t->name);
+        snprintf(dir, n, "%s%s", prefix, t->name);
     else
-        snprintf(dir, n, "%s/%s", case_dir, t->name);
+        snprintf(dir, n, "%s/%s%s", case_dir, prefix, t->name);
     if (mkdir(dir, 0777) != 0 && errno != EEXIST)
         return sim_error(SIM_ERR_IO, "cannot create time directory '%s': %s",
                          dir, strerror(errno));
     return SIM_OK;
+}
+
+void time_dir_discard(const char *dir)
+{
+    if (rmdir(dir) == 0)
+        log_warn("Removed the time directory '%s' whose write failed", dir);
 }
 
 void time_log_progress(struct run_time *t, const char *extra)

@@ -53,18 +53,30 @@ struct run_time {
     char name[64];             /* time name of value                      */
 };
 
-/* Read controlDict (startFrom latestTime looks into case_dir). Errors name
- * the file and line: endTime < startTime, deltaT <= 0, writeInterval <= 0,
- * no time directory for latestTime. */
+/* Read controlDict (startFrom latestTime looks into case_dir for the newest
+ * time directory that holds every file of `need`, a NULL-terminated list
+ * such as { "fluid.vtu", "dem.vtu", NULL } for a coupled run, after
+ * time_clean_debris). Errors name the file and line: endTime < startTime,
+ * deltaT <= 0, writeInterval <= 0, no time directory for latestTime. */
 int time_read(const struct dict *control, const char *case_dir,
-              struct run_time *t);
+              const char *const *need, struct run_time *t);
 
 /* Name of time t with `precision` significant digits. */
 const char *time_name(double t, int precision, char *buf, size_t n);
 
-/* Newest time directory of the case (a directory whose name is a number);
- * SIM_ERR_IO when there is none. */
-int time_latest(const char *case_dir, double *t, char *name, size_t n);
+/* Newest time directory of the case (a directory whose name is a number)
+ * that holds every file of `need` (NULL: any); newer ones without them are
+ * named in a warning (a run whose peer died writes only its own cloud).
+ * SIM_ERR_IO when there is none. Failure dumps (failed.<t>/) are never
+ * time directories. */
+int time_latest(const char *case_dir, const char *const *need, double *t,
+                char *name, size_t n);
+
+/* Remove the debris of killed or failed runs from the case: "*.tmp.<pid>"
+ * files of writers that no longer run, in the case root, the time
+ * directories and failed.* dumps, and empty time directories other than
+ * 0. Returns how many were removed; each is logged. */
+int time_clean_debris(const char *case_dir);
 
 /* Non-zero while the run has not reached endTime. */
 int time_running(const struct run_time *t);
@@ -78,9 +90,14 @@ void time_set_step(struct run_time *t, double dt_wanted);
  * write_now and name. */
 void time_increment(struct run_time *t);
 
-/* Create "<case>/<name>/" for the current time; path into dir. */
-int time_make_dir(const struct run_time *t, const char *case_dir, char *dir,
-                  size_t n);
+/* Create "<case>/<prefix><name>/" for the current time (prefix "" for a
+ * time directory, "failed." for the state a failure leaves to inspect,
+ * which latestTime never takes); path into dir. */
+int time_make_dir(const struct run_time *t, const char *case_dir,
+                  const char *prefix, char *dir, size_t n);
+
+/* Remove dir if it is empty: after a write into it failed. */
+void time_dir_discard(const char *dir);
 
 /* Progress: one line per step when stdout is not a terminal; at most one
  * line per second, with % of endTime, steps/s and time left, when it is.

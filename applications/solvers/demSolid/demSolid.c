@@ -65,10 +65,18 @@ static int read_optional(struct solid *s, const char *rel, struct dict **out)
     return app_read_dict(&s->app, rel, out);
 }
 
+/* controlDict, and system/couplingDict if there is one: a coupled run
+ * restarts (startFrom latestTime) only from a time that holds both
+ * clouds. */
 static int create_time(struct solid *s)
 {
     TRY(app_read_dict(&s->app, "system/controlDict", &s->control));
-    return time_read(s->control, s->app.case_abs, &s->rt);
+    TRY(read_optional(s, "system/couplingDict", &s->coupling));
+    TRY(couple_enabled(s->coupling, &s->coupled));
+    static const char *const alone[] = { "dem.vtu", NULL };
+    static const char *const both[] = { "dem.vtu", "fluid.vtu", NULL };
+    return time_read(s->control, s->app.case_abs, s->coupled ? both : alone,
+                     &s->rt);
 }
 
 static int create_grains(struct solid *s)
@@ -101,8 +109,6 @@ static int create_grains(struct solid *s)
                           &found));
     if (found)
         log_info("Contact histories read from %s", rel);
-    TRY(read_optional(s, "system/couplingDict", &s->coupling));
-    TRY(couple_enabled(s->coupling, &s->coupled));
     if (s->coupled) {
         TRY(app_read_dict(&s->app, "constant/transportProperties",
                           &s->transport));
@@ -179,17 +185,31 @@ static int write_coupled_grains(struct solid *s, const char *path)
     return vtu_write(path, &c, s->rt.binary);
 }
 
-static int write_fields(struct solid *s)
+/* The grains and their contacts into <t>/ (prefix "") and the .pvd, or
+ * into failed.<t>/ (prefix "failed.": not a time to restart from, not in
+ * the .pvd). A failed write removes what it wrote, so that no half time
+ * directory is left for latestTime. */
+static int write_fields(struct solid *s, const char *prefix)
 {
     char dir[4200], path[4400], pvd[4200], rel[256];
-    TRY(time_make_dir(&s->rt, s->app.case_abs, dir, sizeof dir));
+    TRY(time_make_dir(&s->rt, s->app.case_abs, prefix, dir, sizeof dir));
     snprintf(path, sizeof path, "%s/dem.vtu", dir);
-    if (s->coupled && s->cd.exchanges > 0)
-        TRY(write_coupled_grains(s, path));
-    else
-        TRY(dem_write_grains(path, &s->d, s->rt.binary));
-    snprintf(path, sizeof path, "%s/demContacts", dir);
-    TRY(dem_write_contacts(path, &s->d));
+    int rc = s->coupled && s->cd.exchanges > 0
+           ? write_coupled_grains(s, path)
+           : dem_write_grains(path, &s->d, s->rt.binary);
+    if (rc == SIM_OK) {
+        snprintf(path, sizeof path, "%s/demContacts", dir);
+        if ((rc = dem_write_contacts(path, &s->d)) != SIM_OK) {
+            snprintf(path, sizeof path, "%s/dem.vtu", dir);
+            unlink(path);
+        }
+    }
+    if (rc) {
+        time_dir_discard(dir);
+        return rc;
+    }
+    if (prefix[0])
+        return SIM_OK;
     snprintf(rel, sizeof rel, "%s/dem.vtu", s->rt.name);
     return pvd_add(app_path(&s->app, "dem.pvd", pvd, sizeof pvd), s->rt.value,
                    rel);
@@ -246,7 +266,7 @@ static int step(struct solid *s)
         if (s->sol.integrator->checkpoint)
             TRY(s->sol.integrator->checkpoint(s->integ, d));
         TRY(dem_rebuild_neighbours(d));
-        TRY(write_fields(s));
+        TRY(write_fields(s, ""));
         app_log_times(&s->app);
     }
     char extra[256];
@@ -284,12 +304,15 @@ static void final_stats(const struct solid *s)
 static void coupled_failure(struct solid *s, int rc)
 {
     char msg[1024];
+    /* A signal stops both programs, which both write: a restart time.
+     * Otherwise the peer writes nothing: failed.<t>/ (mpsFluid.c). */
+    const char *prefix = rc == SIM_ERR_INTERRUPT ? "" : "failed.";
     snprintf(msg, sizeof msg, "%s", sim_error_message());
     if ((rc == SIM_ERR_PEER || rc == SIM_ERR_INTERRUPT
          || rc == SIM_ERR_TIMEOUT) && s->rt.step > 0
-        && write_fields(s) == SIM_OK)
-        log_info("Last complete state (t = %g s) written to %s/dem.vtu",
-                 s->d.t, s->rt.name);
+        && write_fields(s, prefix) == SIM_OK)
+        log_info("Last complete state (t = %g s) written to %s%s/dem.vtu",
+                 s->d.t, prefix, s->rt.name);
     couple_dem_close(&s->cd, rc);
     sim_error(rc, "%s", msg);
 }
@@ -318,7 +341,8 @@ int main(int argc, char **argv)
     app_init(&s.app, "demSolid", "DEM solver: spheres, contact sub-models, "
              "ARKode or Verlet sub-stepping", argc, argv, NULL, 0);
     dem_init(&s.d);
-    if ((rc = create_time(&s)) || (rc = create_grains(&s))
+    if ((rc = app_lock_case(&s.app)) || (rc = create_time(&s))
+        || (rc = create_grains(&s))
         || (rc = create_functions(&s)) || (rc = start_output(&s)))
         app_fatal(&s.app, rc);
     dict_mark_used(s.control, "application");  /* read by scripts */

@@ -62,10 +62,21 @@ struct fluid {
     struct couple_output out;
 };
 
+/* controlDict, and system/couplingDict if there is one: a coupled run
+ * restarts (startFrom latestTime) only from a time that holds both
+ * clouds. */
 static int create_time(struct fluid *f)
 {
+    char path[4200];
     TRY(app_read_dict(&f->app, "system/controlDict", &f->control));
-    return time_read(f->control, f->app.case_abs, &f->rt);
+    if (access(app_path(&f->app, "system/couplingDict", path, sizeof path),
+               F_OK) == 0)
+        TRY(app_read_dict(&f->app, "system/couplingDict", &f->coupling));
+    TRY(couple_enabled(f->coupling, &f->coupled));
+    static const char *const alone[] = { "fluid.vtu", NULL };
+    static const char *const both[] = { "fluid.vtu", "dem.vtu", NULL };
+    return time_read(f->control, f->app.case_abs, f->coupled ? both : alone,
+                     &f->rt);
 }
 
 /* constant/particlePatches: patch names, dimension and dp of the lattice. */
@@ -168,11 +179,6 @@ static int copy_cloud(struct fluid *f, const struct vtu_cloud *c,
 /* system/couplingDict: nothing of the grains exists without it. */
 static int create_coupling(struct fluid *f)
 {
-    char path[4200];
-    if (access(app_path(&f->app, "system/couplingDict", path, sizeof path),
-               F_OK) == 0)
-        TRY(app_read_dict(&f->app, "system/couplingDict", &f->coupling));
-    TRY(couple_enabled(f->coupling, &f->coupled));
     if (!f->coupled)
         return SIM_OK;
     if (f->rt.adjust)
@@ -293,13 +299,22 @@ static int create_functions(struct fluid *f)
                           &f->fos);
 }
 
-static int write_fields(struct fluid *f)
+/* The fields into <t>/ (prefix "") and the .pvd, or into failed.<t>/
+ * (prefix "failed.": a state to inspect, not to restart from, so not in
+ * the .pvd). A failed write removes the directory it created. */
+static int write_fields(struct fluid *f, const char *prefix)
 {
     char dir[4200], path[4400], pvd[4200], rel[256];
     TRY(refresh_scene(f));
-    TRY(time_make_dir(&f->rt, f->app.case_abs, dir, sizeof dir));
+    TRY(time_make_dir(&f->rt, f->app.case_abs, prefix, dir, sizeof dir));
     snprintf(path, sizeof path, "%s/fluid.vtu", dir);
-    TRY(vtu_write(path, &f->cloud, f->rt.binary));
+    int rc = vtu_write(path, &f->cloud, f->rt.binary);
+    if (rc) {
+        time_dir_discard(dir);
+        return rc;
+    }
+    if (prefix[0])
+        return SIM_OK;
     snprintf(rel, sizeof rel, "%s/fluid.vtu", f->rt.name);
     return pvd_add(app_path(&f->app, "fluid.pvd", pvd, sizeof pvd),
                    f->rt.value, rel);
@@ -322,21 +337,25 @@ static int failed(struct fluid *f, int rc)
 {
     char msg[1024];
     snprintf(msg, sizeof msg, "%s", sim_error_message());
-    if (write_fields(f) == SIM_OK)
-        log_info("State at the failure written to %s/fluid.vtu", f->rt.name);
+    if (write_fields(f, "failed.") == SIM_OK)
+        log_info("State at the failure written to failed.%s/fluid.vtu (to "
+                 "inspect; not a time to restart from)", f->rt.name);
     return sim_error(rc, "%s", msg);
 }
 
 /* The peer failed, a signal came, or the intervals disagree: the fluid
  * is at a complete time (the exchange precedes the step), so write it and
- * tell the peer why we leave. */
+ * tell the peer why we leave. A signal stops both programs, which both
+ * write: a time to restart from. Otherwise the peer writes nothing, and
+ * our state alone goes to failed.<t>/. */
 static int coupled_failure(struct fluid *f, int rc)
 {
     char msg[1024];
+    const char *prefix = rc == SIM_ERR_INTERRUPT ? "" : "failed.";
     snprintf(msg, sizeof msg, "%s", sim_error_message());
-    if (f->rt.step > 0 && write_fields(f) == SIM_OK)
-        log_info("Last complete state (t = %s s) written to %s/fluid.vtu",
-                 f->rt.name, f->rt.name);
+    if (f->rt.step > 0 && write_fields(f, prefix) == SIM_OK)
+        log_info("Last complete state (t = %s s) written to %s%s/fluid.vtu",
+                 f->rt.name, prefix, f->rt.name);
     couple_fluid_close(&f->cf, rc);
     return sim_error(rc, "%s", msg);
 }
@@ -360,7 +379,7 @@ static int step(struct fluid *f)
     TRY(refresh_scene(f));
     TRY(fo_list_execute(f->fos, &f->scene, f->rt.write_now));
     if (f->rt.write_now) {
-        TRY(write_fields(f));
+        TRY(write_fields(f, ""));
         mps_request_rebuild(s);
         app_log_times(&f->app);
     }
@@ -424,7 +443,8 @@ int main(int argc, char **argv)
 
     app_init(&f.app, "mpsFluid", "incompressible MPS solver for free-surface "
              "flows", argc, argv, NULL, 0);
-    if ((rc = create_time(&f)) || (rc = create_fluid(&f))
+    if ((rc = app_lock_case(&f.app)) || (rc = create_time(&f))
+        || (rc = create_fluid(&f))
         || (rc = create_functions(&f)) || (rc = start_output(&f)))
         app_fatal(&f.app, rc);
     dict_mark_used(f.control, "application");

@@ -34,7 +34,7 @@ static int read_time(const char *text, struct run_time *t, struct dict **d)
     int rc = dict_read_string(text, strlen(text), "controlDict", d);
     if (rc)
         return rc;
-    return time_read(*d, ".", t);
+    return time_read(*d, ".", NULL, t);
 }
 
 /* Run a loop and collect the names written. */
@@ -146,13 +146,78 @@ static void test_latest(void **state)
     snprintf(p, sizeof p, "%s/0.2", dir);   /* a file, not a directory */
     fclose(fopen(p, "w"));
     double t = -1;
-    assert_int_equal(time_latest(dir, &t, name, sizeof name), 0);
+    assert_int_equal(time_latest(dir, NULL, &t, name, sizeof name), 0);
     assert_string_equal(name, "0.1");
     assert_true(t == 0.1);
     char cmd[600];
     snprintf(cmd, sizeof cmd, "rm -rf %s", dir);
     assert_int_equal(system(cmd), 0);
-    assert_int_equal(time_latest(dir, &t, name, sizeof name), SIM_ERR_IO);
+    assert_int_equal(time_latest(dir, NULL, &t, name, sizeof name), SIM_ERR_IO);
+}
+
+static void touch(const char *dir, const char *rel)
+{
+    char p[600];
+    snprintf(p, sizeof p, "%s/%s", dir, rel);
+    FILE *f = fopen(p, "w");
+    assert_non_null(f);
+    fclose(f);
+}
+
+/* A coupled restart takes the newest time that holds both clouds: a run
+ * whose peer died wrote its own cloud alone at a newer time (0.3), a
+ * failure dump is failed.<t>/ (never a time), a full disk leaves an empty
+ * directory (0.4) and a kill during a write a "*.tmp.<pid>" of a dead pid;
+ * time_clean_debris removes the last two and nothing else. */
+static void test_latest_coupled(void **state)
+{
+    (void)state;
+    char tmpl[] = "/tmp/mpsdem_time_XXXXXX";
+    char *dir = mkdtemp(tmpl), p[512], name[64];
+    assert_non_null(dir);
+    const char *sub[] = {"0", "0.1", "0.2", "0.3", "0.4", "failed.0.5"};
+    for (int i = 0; i < 6; i++) {
+        snprintf(p, sizeof p, "%s/%s", dir, sub[i]);
+        assert_int_equal(mkdir(p, 0777), 0);
+    }
+    touch(dir, "0/fluid.vtu");
+    touch(dir, "0/dem.vtu");
+    touch(dir, "0.1/fluid.vtu");
+    touch(dir, "0.1/dem.vtu");
+    touch(dir, "0.2/fluid.vtu");
+    touch(dir, "0.2/dem.vtu");
+    touch(dir, "0.2/fluid.vtu.tmp.999999999");   /* no such pid */
+    touch(dir, "0.3/dem.vtu");
+    touch(dir, "failed.0.5/fluid.vtu");
+    touch(dir, "failed.0.5/dem.vtu");
+    char own[64];
+    snprintf(own, sizeof own, "0.1/dem.vtu.tmp.%ld", (long)getpid());
+    touch(dir, own);                             /* a live writer's */
+    const char *const both[] = { "fluid.vtu", "dem.vtu", NULL };
+    double t = -1;
+    assert_int_equal(time_latest(dir, both, &t, name, sizeof name), 0);
+    assert_string_equal(name, "0.2");
+    assert_int_equal(time_latest(dir, NULL, &t, name, sizeof name), 0);
+    assert_string_equal(name, "0.4");
+    assert_int_equal(time_clean_debris(dir), 2);
+    snprintf(p, sizeof p, "%s/0.4", dir);
+    assert_int_not_equal(access(p, F_OK), 0);
+    snprintf(p, sizeof p, "%s/0.2/fluid.vtu.tmp.999999999", dir);
+    assert_int_not_equal(access(p, F_OK), 0);
+    snprintf(p, sizeof p, "%s/%s", dir, own);
+    assert_int_equal(access(p, F_OK), 0);
+    snprintf(p, sizeof p, "%s/0", dir);
+    assert_int_equal(access(p, F_OK), 0);
+    assert_int_equal(time_latest(dir, NULL, &t, name, sizeof name), 0);
+    assert_string_equal(name, "0.3");
+    const char *const none[] = { "fluid.vtu", "nothing.vtu", NULL };
+    assert_int_equal(time_latest(dir, none, &t, name, sizeof name),
+                     SIM_ERR_IO);
+    assert_non_null(strstr(sim_error_message(), "0.3 (no fluid.vtu)"));
+    sim_error_clear();
+    char cmd[600];
+    snprintf(cmd, sizeof cmd, "rm -rf %s", dir);
+    assert_int_equal(system(cmd), 0);
 }
 
 int main(void)
@@ -165,6 +230,7 @@ int main(void)
         cmocka_unit_test(test_timestep_control),
         cmocka_unit_test(test_bad_settings),
         cmocka_unit_test(test_latest),
+        cmocka_unit_test(test_latest_coupled),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
