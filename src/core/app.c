@@ -85,6 +85,11 @@ void app_init(struct app *a, const char *name, const char *description,
               int argc, char **argv, const struct app_option *opts,
               int allow_args)
 {
+    /* A log redirected to a file is block-buffered by default, so a run
+     * that is killed or crashes loses its last 4 KB, the lines that tell
+     * where and why it stopped. The solvers print one line per step, so a
+     * write per line costs nothing measurable. Before any output. */
+    setvbuf(stdout, NULL, _IOLBF, 0);
     memset(a, 0, sizeof *a);
     a->name = name;
     a->case_dir = ".";
