@@ -11,6 +11,32 @@
  * Attaching, replacing a stale segment and unlinking at close are decided
  * under flock() on the segment, after checking that the name still refers
  * to the file we hold (another program may have replaced it meanwhile).
+ *
+ * Trust (issue 14): /dev/shm is writable by every user and the default name
+ * is predictable, so another local user can plant a file at it before the
+ * run, looking like a channel whose peer is ready. An existing name is
+ * therefore used only when, by fstat of the descriptor we opened
+ * (O_NOFOLLOW, O_NONBLOCK: no symbolic link followed, no FIFO waited on),
+ * it is a regular file owned by our effective user with no group or other
+ * permission bits: what create_segment makes. Anything else is refused
+ * with SIM_ERR_INPUT and a message naming its owner and mode and the
+ * couplingDict key `channel` (a non-root user cannot remove another user's
+ * file from the sticky /dev/shm; another name is the way out). When it
+ * cannot even be opened (EACCES, ELOOP, EISDIR) lstat names the owner the
+ * same way. Dead creators' drafts are removed only when they are ours.
+ *
+ * Then every size and offset the segment holds is checked before it
+ * addresses memory (the peer is a program of the same user, but a
+ * corrupted or forged header must give an error, never a write outside
+ * the mapping): at attach, header_bytes and reserve_bytes must be this
+ * build's, the allocation cursor page-aligned inside [header,
+ * CHANNEL_RESERVE_BYTES] and the file at least a header long
+ * (SIM_ERR_INPUT, "not a valid coupling channel"); at the handshake, the
+ * peer's request must be 1..CHAN_MAX_SLOTS frames within the reservation
+ * (SIM_ERR_PEER, "corrupted"); every allocation is bounded by our own
+ * mapping, and every frame received by the peer's ring descriptor checked
+ * against the mapping and the file size (channel_frame.c, channel_impl.h).
+ * Strings of the peer (program, units, case path) are read with bounds.
  */
 #include "coupling/channel_impl.h"
 #include "core/error.h"
@@ -20,6 +46,7 @@
 #include <errno.h>
 #include <fcntl.h>
 #include <limits.h>
+#include <pwd.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -111,15 +138,78 @@ static void remove_dead_drafts(const char *name)
         return;
     snprintf(prefix, sizeof prefix, "%s.init.", name + 1);
     while ((e = readdir(d))) {
+        struct stat st;
         if (strncmp(e->d_name, prefix, strlen(prefix)) != 0)
             continue;
         pid_t pid = (pid_t)atol(e->d_name + strlen(prefix));
-        if (pid > 0 && chan_proc_start(pid) == 0) {
-            snprintf(path, sizeof path, SHM_DIR "/%s", e->d_name);
+        snprintf(path, sizeof path, SHM_DIR "/%s", e->d_name);
+        /* root may unlink anything in /dev/shm: only our own drafts */
+        if (pid > 0 && chan_proc_start(pid) == 0 && lstat(path, &st) == 0 &&
+            S_ISREG(st.st_mode) && st.st_uid == geteuid())
             unlink(path);
-        }
     }
     closedir(d);
+}
+
+/* "nobody (uid 65534)", or "uid 65534" without a passwd entry. */
+static void user_name(uid_t uid, char *buf, size_t n)
+{
+    struct passwd pw, *res = NULL;
+    char tmp[1024];
+
+    if (getpwuid_r(uid, &pw, tmp, sizeof tmp, &res) == 0 && res)
+        snprintf(buf, n, "%s (uid %u)", res->pw_name, (unsigned)uid);
+    else
+        snprintf(buf, n, "uid %u", (unsigned)uid);
+}
+
+static const char *file_kind(mode_t m)
+{
+    if (S_ISDIR(m)) return "directory";
+    if (S_ISLNK(m)) return "symbolic link";
+    if (S_ISFIFO(m)) return "FIFO";
+    if (S_ISSOCK(m)) return "socket";
+    if (S_ISCHR(m) || S_ISBLK(m)) return "device";
+    return "special file";
+}
+
+/* SIM_OK when st (of the file at path) is what create_segment makes: a
+ * regular file of our effective user that nobody else may open (see the
+ * top of this file). Otherwise SIM_ERR_INPUT naming its owner. */
+static int check_owner(const struct channel *c, const char *path,
+                       const struct stat *st)
+{
+    char owner[160], me[160], what[512];
+    uid_t euid = geteuid();
+    int mine = st->st_uid == euid;
+
+    if (S_ISREG(st->st_mode) && mine && !(st->st_mode & 077))
+        return SIM_OK;
+    user_name(st->st_uid, owner, sizeof owner);
+    user_name(euid, me, sizeof me);
+    if (!S_ISREG(st->st_mode))
+        snprintf(what, sizeof what, "it is a %s owned by user %s, not a "
+                 "regular file", file_kind(st->st_mode), owner);
+    else if (!mine)
+        snprintf(what, sizeof what, "it is owned by user %s, not by %s who "
+                 "runs %s", owner, me, c->set.program);
+    else
+        snprintf(what, sizeof what, "it is owned by user %s but has mode "
+                 "%04o: group or others may open it (a channel has mode "
+                 "0600)", owner, (unsigned)(st->st_mode & 07777));
+    return sim_error(SIM_ERR_INPUT, "%s: refusing coupling channel %s: %s. "
+                     SHM_DIR " is writable by every user and the channel "
+                     "name is predictable, so such a file may have been put "
+                     "there to intercept or crash this run; nothing was "
+                     "read from it or written to it. %s",
+                     c->set.program, path, what,
+                     mine && S_ISREG(st->st_mode)
+                         ? "Remove it if no program of yours uses it, or "
+                           "give this case another name with 'channel "
+                           "<word>;' in system/couplingDict."
+                         : "Give this case another name with 'channel "
+                           "<word>;' in system/couplingDict (only its "
+                           "owner or root can remove the file).");
 }
 
 static int map_segment(struct channel *c)
@@ -163,8 +253,7 @@ static int create_segment(struct channel *c, int *created)
 {
     char draft[CHANNEL_NAME_MAX + 32], from[CHANNEL_NAME_MAX + 48],
         to[CHANNEL_NAME_MAX + 16];
-    size_t hbytes = (sizeof(struct chan_header) + CHAN_PAGE - 1) /
-                    CHAN_PAGE * CHAN_PAGE;
+    size_t hbytes = CHAN_HEADER_BYTES;
     int rc = SIM_OK;
 
     *created = 0;
@@ -172,9 +261,16 @@ static int create_segment(struct channel *c, int *created)
     snprintf(draft, sizeof draft, "%s.init.%d", c->set.name, (int)getpid());
     shm_unlink(draft);
     c->fd = shm_open(draft, O_CREAT | O_EXCL | O_RDWR | O_CLOEXEC, 0600);
-    if (c->fd < 0)
+    if (c->fd < 0) {
+        int err = errno;
+        struct stat st;
+        shm_path(draft, from, sizeof from);
+        /* someone else's file at our draft's name, which we cannot remove */
+        if (err == EEXIST && lstat(from, &st) == 0)
+            TRY(check_owner(c, from, &st));
         return sim_error(SIM_ERR_IO, "%s: cannot create shared memory %s: "
-                         "%s", c->set.program, draft, strerror(errno));
+                         "%s", c->set.program, draft, strerror(err));
+    }
     if (fallocate(c->fd, 0, 0, (off_t)hbytes) != 0) {
         rc = sim_error(SIM_ERR_NOMEM, "%s: cannot size shared memory %s: "
                        "%s (check df -h " SHM_DIR ")", c->set.program,
@@ -182,6 +278,7 @@ static int create_segment(struct channel *c, int *created)
         goto out_unlink;
     }
     TRY_GOTO(rc, map_segment(c), out_unlink);
+    c->file_bytes = hbytes;
     c->hdr->version = CHANNEL_PROTOCOL_VERSION;
     c->hdr->header_bytes = (uint32_t)hbytes;
     c->hdr->reserve_bytes = CHANNEL_RESERVE_BYTES;
@@ -234,13 +331,14 @@ static int name_is_ours(const struct channel *c)
 
 static const char *side_word(int s) { return s == 0 ? "fluid" : "solid"; }
 
-/* With the lock held: decide what to do with an existing segment.
- * Returns SIM_OK with *action = 0 attached, 1 retry from scratch. */
-static int decide_attach(struct channel *c, int *action)
+/* With the lock held: decide what to do with an existing segment (st: the
+ * file, already known to be ours). Returns SIM_OK with *action = 0
+ * attached, 1 retry from scratch, 2 wait and retry. */
+static int decide_attach(struct channel *c, const struct stat *st,
+                         int *action)
 {
     struct chan_header *h = c->hdr;
-    const struct chan_side *me = &h->side[c->side],
-                           *other = &h->side[1 - c->side];
+    const struct chan_side *me = &h->side[c->side];
 
     if (h->magic != CHAN_MAGIC || h->version != CHANNEL_PROTOCOL_VERSION)
         return sim_error(SIM_ERR_INPUT, "%s: " SHM_DIR "%s is not a channel "
@@ -249,14 +347,34 @@ static int decide_attach(struct channel *c, int *action)
                          "case, remove it.", c->set.program, c->set.name,
                          CHANNEL_PROTOCOL_VERSION,
                          (unsigned long long)h->magic, h->version);
+    uint32_t hbytes = h->header_bytes;
+    uint64_t reserve = h->reserve_bytes, end = atomic_load(&h->alloc_end);
+    if (hbytes != CHAN_HEADER_BYTES || reserve != CHANNEL_RESERVE_BYTES ||
+        end < CHAN_HEADER_BYTES || end > CHANNEL_RESERVE_BYTES ||
+        end % CHAN_PAGE || (uint64_t)st->st_size < CHAN_HEADER_BYTES)
+        return sim_error(SIM_ERR_INPUT, "%s: " SHM_DIR "%s is not a valid "
+                         "coupling channel: its header says %u header "
+                         "bytes (expected %llu), %llu bytes reserved "
+                         "(expected %llu) and an allocation cursor at %llu "
+                         "bytes (a page boundary in between), in a file of "
+                         "%lld bytes. If no program of yours uses it, remove "
+                         "it.", c->set.program, c->set.name, hbytes,
+                         (unsigned long long)CHAN_HEADER_BYTES,
+                         (unsigned long long)reserve,
+                         (unsigned long long)CHANNEL_RESERVE_BYTES,
+                         (unsigned long long)end, (long long)st->st_size);
     if (chan_side_alive(h, c->side))
-        return sim_error(SIM_ERR_INPUT, "%s: a %s program, %s (pid %d), is "
-                         "already coupled through channel %s (case %s). A "
+        return sim_error(SIM_ERR_INPUT, "%s: a %s program, %.*s (pid %d), "
+                         "is already coupled through channel %s (case %.*s). A "
                          "second pair cannot run on the same case: stop "
                          "the first one, or give this case its own "
                          "'channel' in system/couplingDict.", c->set.program,
-                         side_word(c->side), me->program,
-                         (int)atomic_load(&me->pid), c->set.name,
+                         side_word(c->side), (int)sizeof me->program,
+                         me->program, (int)atomic_load(&me->pid),
+                         c->set.name,
+                         me->agree.case_path[0]
+                             ? (int)sizeof me->agree.case_path
+                             : (int)sizeof c->set.case_path,
                          me->agree.case_path[0] ? me->agree.case_path
                                                 : c->set.case_path);
     if (!chan_side_alive(h, 1 - c->side)) {
@@ -274,7 +392,6 @@ static int decide_attach(struct channel *c, int *action)
         *action = 2;
         return SIM_OK;
     }
-    (void)other;
     claim_side(c);
     *action = 0;
     return SIM_OK;
@@ -283,17 +400,29 @@ static int decide_attach(struct channel *c, int *action)
 /* *attached = 0: the name vanished or was replaced, try again. */
 static int attach_segment(struct channel *c, uint64_t deadline, int *attached)
 {
-    int rc, action = 1;
+    int rc = SIM_OK, action = 1;
+    char path[CHANNEL_NAME_MAX + 16];
     struct stat st;
 
     *attached = 0;
-    c->fd = shm_open(c->set.name, O_RDWR | O_CLOEXEC, 0);
+    shm_path(c->set.name, path, sizeof path);
+    c->fd = open(path, O_RDWR | O_CLOEXEC | O_NOFOLLOW | O_NONBLOCK);
     if (c->fd < 0) {
-        if (errno == ENOENT)
+        int err = errno;
+        if (err == ENOENT)
             return SIM_OK;
+        if (lstat(path, &st) == 0)
+            TRY(check_owner(c, path, &st));
         return sim_error(SIM_ERR_IO, "%s: cannot open channel %s: %s",
-                         c->set.program, c->set.name, strerror(errno));
+                         c->set.program, c->set.name, strerror(err));
     }
+    /* before anything else, flock included: it could be held forever */
+    if (fstat(c->fd, &st) != 0) {
+        rc = sim_error(SIM_ERR_IO, "%s: fstat of channel %s: %s",
+                       c->set.program, c->set.name, strerror(errno));
+        goto out_close;
+    }
+    TRY_GOTO(rc, check_owner(c, path, &st), out_close);
     TRY_GOTO(rc, lock_segment(c, deadline), out_close);
     if (!name_is_ours(c))
         goto out_close;
@@ -305,8 +434,9 @@ static int attach_segment(struct channel *c, uint64_t deadline, int *attached)
                        (long long)st.st_size);
         goto out_close;
     }
+    c->file_bytes = (uint64_t)st.st_size;
     TRY_GOTO(rc, map_segment(c), out_close);
-    TRY_GOTO(rc, decide_attach(c, &action), out_close);
+    TRY_GOTO(rc, decide_attach(c, &st, &action), out_close);
     if (action == 0) {
         flock(c->fd, LOCK_UN);
         *attached = 1;
@@ -327,12 +457,30 @@ static int ready_peer_published(struct channel *c, void *arg)
     return atomic_load(&c->hdr->side[c->peer].state) >= SIDE_READY;
 }
 
+/* What this side agrees to, from its own settings (not read back). */
+static void own_agreement(const struct channel *c, struct chan_agree *a)
+{
+    memset(a, 0, sizeof *a);
+    a->protocol = CHANNEL_PROTOCOL_VERSION;
+    a->dimension = c->set.dimension;
+    snprintf(a->units, sizeof a->units, "%s", c->set.units);
+    a->digest = c->set.digest;
+    snprintf(a->case_path, sizeof a->case_path, "%s", c->set.case_path);
+}
+
 static int compare_agreement(struct channel *c)
 {
-    const struct chan_agree *a = &c->hdr->side[c->side].agree,
-                            *b = &c->hdr->side[c->peer].agree;
+    struct chan_agree own, peer;
+    const struct chan_agree *a = &own, *b = &peer;
     const char *what = NULL;
     char mine[CHANNEL_PATH_MAX + 32], theirs[CHANNEL_PATH_MAX + 32];
+
+    own_agreement(c, &own);
+    /* the peer's copy, its strings terminated whatever the segment holds */
+    memcpy(&peer, &c->hdr->side[c->peer].agree, sizeof peer);
+    atomic_signal_fence(memory_order_seq_cst);
+    peer.units[sizeof peer.units - 1] = '\0';
+    peer.case_path[sizeof peer.case_path - 1] = '\0';
 
     if (a->protocol != b->protocol) {
         what = "coupling protocol version";
@@ -348,8 +496,9 @@ static int compare_agreement(struct channel *c)
         snprintf(theirs, sizeof theirs, "%d", b->dimension);
     } else if (strcmp(a->units, b->units) != 0) {
         what = "units";
-        snprintf(mine, sizeof mine, "%s", a->units);
-        snprintf(theirs, sizeof theirs, "%s", b->units);
+        snprintf(mine, sizeof mine, "%.*s", (int)sizeof a->units, a->units);
+        snprintf(theirs, sizeof theirs, "%.*s", (int)sizeof b->units,
+                 b->units);
     } else if (a->digest != b->digest) {
         what = "coupling settings (digest of system/couplingDict as "
                "expanded; was it edited between the two starts?)";
@@ -370,12 +519,7 @@ static int handshake(struct channel *c)
     struct chan_side *me = &c->hdr->side[c->side];
     const struct chan_side *peer = &c->hdr->side[c->peer];
 
-    me->agree.protocol = CHANNEL_PROTOCOL_VERSION;
-    me->agree.dimension = c->set.dimension;
-    snprintf(me->agree.units, sizeof me->agree.units, "%s", c->set.units);
-    me->agree.digest = c->set.digest;
-    snprintf(me->agree.case_path, sizeof me->agree.case_path, "%s",
-             c->set.case_path);
+    own_agreement(c, &me->agree);
     me->nslots_req = (uint32_t)c->set.nslots;
     me->slot_bytes_req = c->set.slot_bytes;
     chan_set_state(c, SIDE_READY);
@@ -387,16 +531,28 @@ static int handshake(struct channel *c)
      * (and may have sent frames we still have to read) */
     if (atomic_load(&peer->state) != SIDE_CLOSED)
         TRY(chan_check_peer(c));
-    uint64_t nslots = me->nslots_req > peer->nslots_req ? me->nslots_req
-                                                          : peer->nslots_req;
-    uint64_t cap = me->slot_bytes_req > peer->slot_bytes_req
-                       ? me->slot_bytes_req : peer->slot_bytes_req;
+    /* the larger request of the two, the peer's read once and bounded */
+    uint64_t pslots = peer->nslots_req, pbytes = peer->slot_bytes_req;
+    atomic_signal_fence(memory_order_seq_cst);
+    if (pslots < 1 || pslots > CHAN_MAX_SLOTS ||
+        pbytes > CHANNEL_RESERVE_BYTES / pslots)
+        return sim_error(SIM_ERR_PEER, "%s: channel %s is corrupted: %s "
+                         "(pid %d) asks for %llu frames in flight of %llu "
+                         "bytes (a channel holds 1 to %d frames, %llu GiB "
+                         "in all)", c->set.program, c->set.name,
+                         c->peer_program, (int)c->peer_pid,
+                         (unsigned long long)pslots,
+                         (unsigned long long)pbytes, CHAN_MAX_SLOTS,
+                         (unsigned long long)(CHANNEL_RESERVE_BYTES >> 30));
+    uint64_t nslots = (uint64_t)c->set.nslots > pslots
+                          ? (uint64_t)c->set.nslots : pslots;
+    uint64_t cap = c->set.slot_bytes > pbytes ? c->set.slot_bytes : pbytes;
     TRY(chan_ring_alloc(c, nslots, cap));
     if (!c->set.quiet)
         log_info("Coupled with %s (pid %d) through " SHM_DIR "%s: %llu "
                  "frames in flight of %llu bytes", c->peer_program,
                  (int)c->peer_pid, c->set.name, (unsigned long long)nslots,
-                 (unsigned long long)c->hdr->ring[c->side].capacity);
+                 (unsigned long long)c->tx.capacity);
     return SIM_OK;
 }
 
@@ -493,7 +649,7 @@ const char *channel_peer_program(const struct channel *c)
 }
 size_t channel_capacity(const struct channel *c)
 {
-    return c->hdr->ring[c->side].capacity;
+    return c->tx.capacity;
 }
 
 int channel_poll(struct channel *c)

@@ -29,7 +29,11 @@
  *                      corrupted frame;
  *   SIM_ERR_TIMEOUT    nothing arrived within settings.timeout;
  *   SIM_ERR_INTERRUPT  a signal asked this program to stop;
- *   SIM_ERR_INPUT      bad settings, or a second pair on the same channel;
+ *   SIM_ERR_INPUT      bad settings, a second pair on the same channel, or
+ *                      a file at the channel's name that is not this
+ *                      user's own mode-0600 regular file (the message
+ *                      names its owner and the couplingDict key `channel`)
+ *                      or whose header is not valid (channel.c);
  *   SIM_ERR_IO         a system call on the segment failed.
  * With each, sim_error_message() says what happened, naming the peer
  * program and pid. The application then writes its last complete state and
@@ -46,6 +50,9 @@
  * A stale segment (every program that claimed it is gone) is removed and
  * replaced; a program whose side of the channel is already held by a live
  * program is refused. Only one thread per program may use a channel.
+ * Nothing the segment holds is trusted: sizes, offsets and strides are
+ * checked against this program's mapping and the file before they address
+ * memory, so a corrupted or forged header gives an error, not a crash.
  *
  * In a solver (demSolid shown; mpsFluid is the mirror image):
  *

@@ -17,6 +17,13 @@
  * descriptor (offset, nslots, slot_stride, capacity) is rewritten by the
  * producer only while head == tail, and the consumer reads it only after an
  * acquire load saw head > tail, so the release store of head publishes it.
+ *
+ * Nothing read from the segment is trusted as an address: the producer
+ * writes through its own copy of its descriptor (struct channel.tx), the
+ * consumer reads the peer's descriptor once per frame into a local copy and
+ * checks it against the mapping and the file (chan_desc_valid), and the
+ * header's sizes and allocation cursor are checked at attach and bounded
+ * by CHANNEL_RESERVE_BYTES of this build at every allocation.
  */
 #ifndef MPSDEM_COUPLING_CHANNEL_IMPL_H
 #define MPSDEM_COUPLING_CHANNEL_IMPL_H
@@ -31,6 +38,8 @@
 #define CHAN_PAGE 4096
 #define CHAN_SPIN 2000          /* pause iterations before sleeping      */
 #define CHAN_SLICE_NS 50000000L /* longest single futex sleep [ns]        */
+#define CHAN_FRAME_HDR 64       /* slot bytes before the payload          */
+#define CHAN_MAX_SLOTS 1024     /* frames in flight per ring, at most     */
 
 enum chan_state {
     SIDE_FREE = 0,  /* nobody claimed this side                          */
@@ -74,6 +83,11 @@ struct chan_ring {
     uint64_t generation;                        /* number of (re)allocations */
 };
 
+/* A ring descriptor as a program holds it privately (see the top). */
+struct chan_desc {
+    uint64_t offset, nslots, slot_stride, capacity;
+};
+
 struct chan_header {
     uint64_t magic;        /* written last at creation                    */
     uint32_t version;      /* CHANNEL_PROTOCOL_VERSION                    */
@@ -85,11 +99,17 @@ struct chan_header {
     struct chan_ring ring[2];    /* ring[s] carries frames written by s   */
 };
 
+/* Bytes before the first ring: the header rounded up to a page. */
+#define CHAN_HEADER_BYTES \
+    ((sizeof(struct chan_header) + CHAN_PAGE - 1) / CHAN_PAGE * CHAN_PAGE)
+
 struct channel {
     struct channel_settings set;
     int fd;
     char *base;                 /* mapping of CHANNEL_RESERVE_BYTES        */
     struct chan_header *hdr;
+    uint64_t file_bytes;        /* size of the file when last looked at    */
+    struct chan_desc tx;        /* the ring we write, as we allocated it   */
     int side, peer;
     int peer_pidfd;             /* -1: pid unknown yet; -2: already gone   */
     pid_t peer_pid;
@@ -145,15 +165,15 @@ int chan_registry_add(struct channel *c);
 void chan_registry_remove(struct channel *c);
 
 /* channel_frame.c */
+/* Allocate (or grow) the ring this side writes: nslots in
+ * [1, CHAN_MAX_SLOTS], payload capacity rounded up to CHAN_ALIGN, inside
+ * this build's reservation whatever the shared cursor says. */
 int chan_ring_alloc(struct channel *c, uint64_t nslots, uint64_t capacity);
-static inline struct channel_frame *chan_slot(struct channel *c, int r,
-                                              uint64_t counter)
-{
-    struct chan_ring *ring = &c->hdr->ring[r];
-    return (struct channel_frame *)(c->base + ring->offset +
-                                    (counter % ring->nslots) *
-                                        ring->slot_stride);
-}
+/* Non-zero when d lies inside the mapping, past the header, and inside the
+ * file (fstat again when the size last seen is too small), with sane
+ * slots: what a descriptor read from the segment must pass before it
+ * addresses anything. */
+int chan_desc_valid(struct channel *c, const struct chan_desc *d);
 uint64_t chan_frame_checksum(const struct channel_frame *f,
                              const void *payload);
 

@@ -135,6 +135,14 @@ static int view(const struct channel_frame *f, uint32_t kind,
                          "%s message (kind %u, step %llu)",
                          proto_kind_name(kind), proto_kind_name(f->kind),
                          f->kind, (unsigned long long)f->step);
+    /* every kind has a field of at least one double per item: a larger
+     * count would overflow the layout and index past the payload */
+    if (f->count > f->bytes / sizeof(double))
+        return sim_error(SIM_ERR_PEER, "malformed %s message (step %llu): "
+                         "%llu items in %llu bytes",
+                         proto_kind_name(kind), (unsigned long long)f->step,
+                         (unsigned long long)f->count,
+                         (unsigned long long)f->bytes);
     proto_layout(kind, f->flags, f->count, off, &bytes);
     if (bytes != f->bytes)
         return sim_error(SIM_ERR_PEER, "malformed %s message (step %llu): "
