@@ -16,6 +16,12 @@
 #include <stdlib.h>
 #include <string.h>
 
+/* The channel counts waits in uint64_t nanoseconds and the heartbeat
+ * period in a long, and declares a peer hung after CHANNEL_HUNG_HEARTBEATS
+ * silent periods: seconds above ~1.8e10 (9e8 for the heartbeat) overflow
+ * and fail at once. 1e8 s (three years) keeps all of them exact. */
+#define SETTINGS_MAX_SECONDS 1e8
+
 static int settings_digest(const struct dict *d, uint64_t *out)
 {
     char *text = NULL;
@@ -51,13 +57,14 @@ int channel_settings_from_dict(const struct dict *d,
         snprintf(s->name, sizeof s->name, "/%s", bare);
     }
     TRY(dict_get_scalar_or(d, "timeout", s->timeout, &s->timeout));
-    if (!(s->timeout > 0))
-        return dict_error(d, "timeout", SIM_ERR_DICT, "timeout must be "
-                          "positive [s], not %g", s->timeout);
+    if (!(s->timeout > 0) || !(s->timeout <= SETTINGS_MAX_SECONDS))
+        return dict_error(d, "timeout", SIM_ERR_DICT, "timeout must be in "
+                          "(0, %g] [s], not %g", SETTINGS_MAX_SECONDS,
+                          s->timeout);
     TRY(dict_get_scalar_or(d, "heartbeatInterval", s->heartbeat_interval,
                            &s->heartbeat_interval));
     if (!(s->heartbeat_interval > 0) ||
-        s->heartbeat_interval > s->timeout)
+        !(s->heartbeat_interval <= s->timeout))
         return dict_error(d, "heartbeatInterval", SIM_ERR_DICT,
                           "heartbeatInterval must be in (0, timeout = %g] "
                           "[s], not %g", s->timeout, s->heartbeat_interval);

@@ -62,6 +62,13 @@ int couple_enabled(const struct dict *coupling, int *on)
         return SIM_OK;
     TRY(dict_get_bool_or(coupling, "coupled", 1, on));
     TRY(dict_get_word_or(coupling, "scheme", schemes, 0, &idx));
+    if (*on) {
+        /* The channel opens after the first output is written; a bad
+         * timeout must stop the run before it touches anything. */
+        struct channel_settings cs;
+        TRY(channel_settings_default(&cs, CHANNEL_SOLID, "", "."));
+        TRY(channel_settings_from_dict(coupling, &cs));
+    }
     return SIM_OK;
 }
 

@@ -56,8 +56,9 @@ struct couple_dem {
 /* Whether a case is coupled: system/couplingDict present (coupling may be
  * NULL) and `coupled` (default yes); `scheme sequential|concurrent` is
  * checked here (the DEM side does the same in both, couple_fluid.h says
- * what differs). Both programs call this before anything of the other
- * phase is allocated. */
+ * what differs), and so are the channel's keys (timeout, ...). Both
+ * programs call this before anything of the other phase is allocated and
+ * before any output. */
 int couple_enabled(const struct dict *coupling, int *on);
 
 /* Settings from system/couplingDict; fluid density and viscosity from
