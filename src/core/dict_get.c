@@ -253,6 +253,51 @@ static const struct dict_value *single(const struct dict_value *v)
     return v->u.l.n == 1 ? &v->u.l.items[0] : NULL;
 }
 
+/* Whether items[0..k) alone is a value of the shape asked for: `want`
+ * DICT_NUMBER a scalar, DICT_LIST a list (of `len` numbers when len > 0),
+ * DICT_WORD a word or string. */
+static int prefix_fits(const struct dict_value *items, int k,
+                       enum dict_kind want, int len)
+{
+    struct dict_value e = { .kind = DICT_ENTRY };
+    const int *dims;
+    e.u.l.items = (struct dict_value *)items;
+    e.u.l.n = k;
+    if (want == DICT_WORD)
+        return k == 1 && (items[0].kind == DICT_WORD ||
+                          items[0].kind == DICT_STRING);
+    const struct dict_value *x = scalar_item(&e, &dims, want);
+    if (!x || want != DICT_LIST || len <= 0)
+        return x != NULL;
+    if (x->u.l.n != len)
+        return 0;
+    for (int i = 0; i < len; i++)
+        if (x->u.l.items[i].kind != DICT_NUMBER)
+            return 0;
+    return 1;
+}
+
+/* `min (0 0 0) max (1 1 1);` is one entry 'min' of four values, and "got 4
+ * values" would contradict "expected a vector of 3 numbers": a value of
+ * the right shape followed by a word is a forgotten ';', reported at that
+ * word. Anything else gets the plain "expected ..., got ..." message. */
+static int wrong_shape(const struct dict_value *v, const char *what,
+                       const char *key, enum dict_kind want, int len)
+{
+    if (v->kind == DICT_ENTRY)
+        for (int k = 1; k < v->u.l.n; k++) {
+            const struct dict_value *w = &v->u.l.items[k];
+            if (w->kind != DICT_WORD || !prefix_fits(v->u.l.items, k, want,
+                                                     len))
+                continue;
+            return dict_value_error(w, SIM_ERR_DICT, "'%s' holds %s "
+                                    "followed by '%s': missing ';' "
+                                    "before '%s'?", key, what, w->u.s.text,
+                                    w->u.s.text);
+        }
+    return wrong(v, what, key);
+}
+
 /* ---- getters ---------------------------------------------------------------- */
 
 static int scalar_impl(const struct dict *d, const char *key,
@@ -270,7 +315,7 @@ static int scalar_impl(const struct dict *d, const char *key,
     const int *dims;
     const struct dict_value *x = scalar_item(e->val, &dims, DICT_NUMBER);
     if (!x)
-        return wrong(e->val, "a scalar", key);
+        return wrong_shape(e->val, "a scalar", key, DICT_NUMBER, 0);
     if (want && dims && memcmp(dims, want, 7 * sizeof *dims) != 0) {
         const int *g = dims;
         const int *w = want;
@@ -351,7 +396,7 @@ static int label_impl(const struct dict *d, const char *key, const long *def,
     const int *dims;
     const struct dict_value *x = scalar_item(e->val, &dims, DICT_NUMBER);
     if (!x)
-        return wrong(e->val, "an integer", key);
+        return wrong_shape(e->val, "an integer", key, DICT_NUMBER, 0);
     TRY(label_of(x, key, out));
     record(d, key, e->val);
     return SIM_OK;
@@ -391,7 +436,8 @@ static int bool_impl(const struct dict *d, const char *key, const int *def,
             }
         }
     }
-    return wrong(e->val, "yes/no, on/off, true/false or 1/0", key);
+    return wrong_shape(e->val, "yes/no, on/off, true/false or 1/0", key,
+                       DICT_WORD, 0);
 }
 
 int dict_get_bool(const struct dict *d, const char *key, int *out)
@@ -416,7 +462,7 @@ static int word_impl(const struct dict *d, const char *key,
     }
     const struct dict_value *x = single(e->val);
     if (!x || (x->kind != DICT_WORD && x->kind != DICT_STRING))
-        return wrong(e->val, "a word", key);
+        return wrong_shape(e->val, "a word", key, DICT_WORD, 0);
     int n = 0;
     for (; allowed[n]; n++) {
         if (strcmp(allowed[n], x->u.s.text) == 0) {
@@ -462,7 +508,8 @@ static int string_impl(const struct dict *d, const char *key, const char *def,
     }
     const struct dict_value *x = single(e->val);
     if (!x || (x->kind != DICT_WORD && x->kind != DICT_STRING))
-        return wrong(e->val, "a word or a quoted string", key);
+        return wrong_shape(e->val, "a word or a quoted string", key,
+                           DICT_WORD, 0);
     *out = x->u.s.text;
     record(d, key, e->val);
     return SIM_OK;
@@ -487,7 +534,8 @@ static int vector_of(const struct dict_value *v, const char *key, int n,
     char what[64];
     snprintf(what, sizeof what, "a vector of %d numbers", n);
     if (!l || l->u.l.n != n)
-        return wrong(l ? l : v, what, key);
+        return l ? wrong(l, what, key)
+                 : wrong_shape(v, what, key, DICT_LIST, n);
     for (int i = 0; i < n; i++)
         if (l->u.l.items[i].kind != DICT_NUMBER)
             return wrong(&l->u.l.items[i], "a number", key);
@@ -561,7 +609,7 @@ int dict_get_list(const struct dict *d, const char *key,
     TRY(get_entry(d, key, 1, &e));
     const struct dict_value *x = single(e->val);
     if (!x || x->kind != DICT_LIST)
-        return wrong(e->val, "a list ( ... )", key);
+        return wrong_shape(e->val, "a list ( ... )", key, DICT_LIST, 0);
     *out = x;
     record(d, key, e->val);
     return SIM_OK;

@@ -408,6 +408,50 @@ static void test_vector_getters(void **state)
     dict_free(d);
 }
 
+/* A forgotten ';' runs one entry into the next: the message names it
+ * instead of counting the values (issue 15 item 6). */
+static void test_missing_semicolon(void **state)
+{
+    (void)state;
+    struct dict *d = parse("min (0.01 0.005 0.01) max (0.02 0.015 0.02);\n"
+                           "dp 0.01 layers 3;\n"
+                           "g [0 1 -2 0 0 0 0] (0 0 -9.81) rho 1;\n"
+                           "type fluid shape box;\n"
+                           "on yes seed 2;\n"
+                           "two (1 2) max (1 2 3);\n"
+                           "n 3 q;\n"
+                           "open (zmax) velocity (0 0 0);\n");
+    double v[3], x;
+    long n;
+    int b;
+    const char *w;
+    const struct dict_value *l;
+    assert_int_equal(dict_get_vector(d, "min", 3, v), SIM_ERR_DICT);
+    msg_has("case/system/testDict:1:23: ", "'min' holds a vector of 3 "
+            "numbers followed by 'max': missing ';' before 'max'?");
+    assert_null(strstr(sim_error_message(), "values"));
+    assert_int_equal(dict_get_scalar(d, "dp", &x), SIM_ERR_DICT);
+    msg_has("case/system/testDict:2:9: ", "'dp' holds a scalar followed by "
+            "'layers': missing ';'");
+    assert_int_equal(dict_get_vector(d, "g", 3, v), SIM_ERR_DICT);
+    msg_has("case/system/testDict:3:32: ", "followed by 'rho'");
+    assert_int_equal(dict_get_string(d, "type", &w), SIM_ERR_DICT);
+    msg_has("case/system/testDict:4:12: ", "'type' holds a word or a quoted "
+            "string followed by 'shape'");
+    assert_int_equal(dict_get_bool(d, "on", &b), SIM_ERR_DICT);
+    msg_has("case/system/testDict:5:8: ", "followed by 'seed'");
+    assert_int_equal(dict_get_label(d, "n", &n), SIM_ERR_DICT);
+    msg_has("case/system/testDict:7:5: ", "'n' holds an integer followed by "
+            "'q'");
+    assert_int_equal(dict_get_list(d, "open", &l), SIM_ERR_DICT);
+    msg_has("case/system/testDict:8:13: ", "followed by 'velocity'");
+    /* a prefix of the wrong shape is not a missing ';' */
+    assert_int_equal(dict_get_vector(d, "two", 3, v), SIM_ERR_DICT);
+    msg_has("case/system/testDict:6:5: ", "expected a vector of 3 numbers "
+            "for 'two', got 3 values");
+    dict_free(d);
+}
+
 static void test_dict_list_value_getters(void **state)
 {
     (void)state;
@@ -646,6 +690,7 @@ int main(void)
         cmocka_unit_test(test_bool_getters),
         cmocka_unit_test(test_word_string_getters),
         cmocka_unit_test(test_vector_getters),
+        cmocka_unit_test(test_missing_semicolon),
         cmocka_unit_test(test_dict_list_value_getters),
         cmocka_unit_test(test_checked_value_forms),
         cmocka_unit_test(test_parse_errors),
