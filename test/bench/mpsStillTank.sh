@@ -52,7 +52,7 @@ gnuplot -e "set terminal pngcairo size 900,420 noenhanced; set output 'stillTank
     set multiplot layout 1,2; set xlabel 't [s]'; set grid; set key top left;
     set ylabel 'max |u| / sqrt(g h)';
     plot '$c/table' every ::1 u 1:3 w lp pt 7 ps 0.5 t 'hydrostaticTank2D', 0.01 w l dt 2 t 'E1-08 target';
-    set ylabel 'relative error'; set key top left;
+    set ylabel 'relative error'; set key bottom right;
     plot '$c/table' every ::1 u 1:4 w lp pt 7 ps 0.5 t 'L2 of p vs rho g (h - y)',
          '' every ::1 u 1:5 w lp pt 6 ps 0.5 t 'bottom probe / rho g (h - 0.0025) - 1';
     unset multiplot" && echo "wrote stillTank.png"
