@@ -185,6 +185,16 @@ static int read_settings(const struct dict *c, struct run_time *t)
     if (!(t->delta_t > 0))
         return dict_error(c, "deltaT", SIM_ERR_DICT,
                           "deltaT must be positive, got %g", t->delta_t);
+    /* A step that does not move t (deltaT 1e-300) used to fail at step 0
+     * with a NaN in the solver that named nothing. Where t + deltaT > t
+     * holds up to endTime, the run has fewer than 2^54 steps, which the
+     * step counter (long) holds. */
+    double t_max = fmax(fabs(t->start_time), fabs(t->end_time));
+    if (!(t_max + t->delta_t > t_max))
+        return dict_error(c, "deltaT", SIM_ERR_DICT,
+                          "deltaT = %g is too small for times up to %g s: "
+                          "t + deltaT == t in double precision",
+                          t->delta_t, t_max);
     TRY(dict_get_bool_or(c, "adjustTimeStep", 0, &t->adjust));
     TRY(dict_get_scalar_or(c, "maxCo", 0.2, &t->max_co));
     TRY(dict_get_scalar_or(c, "maxDeltaT", 1.0, &t->max_delta_t));

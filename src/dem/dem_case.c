@@ -197,6 +197,8 @@ static int read_arkode(const struct dict *sol, struct dem *d,
     return SIM_OK;
 }
 
+#define VERLET_MIN_FRACTION 1e-6
+
 static int read_verlet(const struct dict *sol, struct dem *d,
                        struct dem_solution *s)
 {
@@ -208,11 +210,21 @@ static int read_verlet(const struct dict *sol, struct dem *d,
     if (!(s->params.dt >= 0))
         return dict_error(v.d, key(&v, "deltaT"), SIM_ERR_DICT,
                           "deltaT must be >= 0 (0: rayleighFraction)");
-    if (!(s->params.dt_fraction > 0 && s->params.dt_fraction <= 1))
+    /* A step a million times below the bound is a typo, not a choice:
+     * 1e-300 overflowed the step count of an advance, and the grains
+     * silently did not move. */
+    if (!(s->params.dt_fraction >= VERLET_MIN_FRACTION &&
+          s->params.dt_fraction <= 1))
         return dict_error(v.d, key(&v, "rayleighFraction"), SIM_ERR_DICT,
-                          "rayleighFraction %g must be in (0, 1]",
-                          s->params.dt_fraction);
+                          "rayleighFraction %g must be in [%g, 1]",
+                          s->params.dt_fraction, VERLET_MIN_FRACTION);
     double dtr = d->dt_stable;
+    if (s->params.dt > 0 && dtr > 0 &&
+        s->params.dt < VERLET_MIN_FRACTION * dtr)
+        return dict_error(v.d, key(&v, "deltaT"), SIM_ERR_DICT,
+                          "deltaT %g s is below %g of the stability bound "
+                          "%g s (Rayleigh step, eq. 38)", s->params.dt,
+                          VERLET_MIN_FRACTION, dtr);
     if (s->params.dt > 0 && dtr > 0 && s->params.dt > dtr)
         return dict_error(v.d, key(&v, "deltaT"), SIM_ERR_DICT,
                           "deltaT %g s is above the stability bound %g s "

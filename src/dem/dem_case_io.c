@@ -170,7 +170,8 @@ int dem_read_grains(const char *path, struct dem *d)
     memset(&c, 0, sizeof c);
     TRY(vtu_read(path, &c));
     const struct vtu_field *fr, *fv, *fw, *fg, *fi;
-    int rc = vtu_require(&c, path, "radius", VTU_FLOAT64, 1, &fr);
+    int rc = vtu_check_finite(&c, path);
+    if (!rc) rc = vtu_require(&c, path, "radius", VTU_FLOAT64, 1, &fr);
     if (!rc) rc = vtu_require(&c, path, "velocity", VTU_FLOAT64, 3, &fv);
     if (!rc) rc = vtu_require(&c, path, "omega", VTU_FLOAT64, 3, &fw);
     if (!rc) rc = vtu_require(&c, path, "group", VTU_INT32, 1, &fg);

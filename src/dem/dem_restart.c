@@ -213,16 +213,34 @@ int dem_check_initial_overlap(struct dem *d, const struct dem_solution *s,
         return SIM_OK;
     }
     if (!s->relax_overlap) {
-        size_t ij[2] = {0, 0};
-        double wp;
+        size_t ij[2] = {0, 0}, gw = 0;
+        double wp, ww = 0;
+        int w = -1;
         scan_pairs(d, s->max_overlap, &wp, ij);
+        /* The worst may be a grain in a wall (a stray grain far outside
+         * the tank, x = 1e300): the pair alone named "grains 0 and 0". */
+        for (size_t i = 0; i < d->n; i++)
+            for (int k = 0; k < d->nwalls; k++) {
+                double n[3], delta;
+                if (wall_contact(&d->walls[k], &d->x[3 * i], d->r[i], n,
+                                 &delta) && delta / d->r[i] > ww)
+                    ww = delta / d->r[i], gw = i, w = k;
+            }
+        char eg[256];
+        const double *x = &d->x[3 * gw];
+        if (w >= 0 && ww > wp)
+            snprintf(eg, sizeof eg, "grain id %lld at (%g %g %g) and wall "
+                     "%d of patch %s", (long long)d->id[gw], x[0], x[1],
+                     x[2], w, d->patch_names[d->walls[w].patch]);
+        else
+            snprintf(eg, sizeof eg, "grains id %lld and %lld",
+                     (long long)d->id[ij[0]], (long long)d->id[ij[1]]);
         return sim_error(SIM_ERR_INPUT,
                          "%s: %ld contacts overlap by more than %g of the "
-                         "smaller radius (largest %.3g, e.g. grains id %lld "
-                         "and %lld); set initialOverlap/action relax in "
-                         "system/demSolution to separate them", where, count,
-                         s->max_overlap, worst,
-                         (long long)d->id[ij[0]], (long long)d->id[ij[1]]);
+                         "smaller radius (largest %.3g, e.g. %s); set "
+                         "initialOverlap/action relax in system/demSolution "
+                         "to separate them", where, count, s->max_overlap,
+                         worst, eg);
     }
     log_info("Initial overlap: %ld contacts above %g (largest %.3g): "
              "relaxing", count, s->max_overlap, worst);

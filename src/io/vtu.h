@@ -56,6 +56,12 @@ const struct vtu_field *vtu_find(const struct vtu_cloud *c, const char *name);
 int vtu_require(const struct vtu_cloud *c, const char *file, const char *name,
                 int type, int ncomp, const struct vtu_field **out);
 
+/* SIM_ERR_INPUT naming the file, the array (Points, TimeValue or the point
+ * field), the point (and its id) when a floating-point value is infinite
+ * or NaN. vtu_read accepts such values (vtuInfo shows a failed state);
+ * a program starting from a file calls this. */
+int vtu_check_finite(const struct vtu_cloud *c, const char *file);
+
 /* Append a field with freshly allocated, zeroed storage (owned by the cloud
  * only if the cloud came from vtu_read or was built with this function). */
 int vtu_cloud_add_field(struct vtu_cloud *c, const char *name,

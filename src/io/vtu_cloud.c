@@ -1,4 +1,6 @@
 /* vtu_cloud.c — owning and querying a struct vtu_cloud (vtu.h). */
+#include <math.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -43,6 +45,51 @@ int vtu_require(const struct vtu_cloud *c, const char *file, const char *name,
         return sim_error(SIM_ERR_IO, "%s: point field '%s' has %d components, "
                          "expected %d", file, name, f->ncomp, ncomp);
     *out = f;
+    return SIM_OK;
+}
+
+/* The first non-finite value of n*ncomp doubles, or -1. */
+static long first_non_finite(const double *v, size_t n)
+{
+    for (size_t k = 0; k < n; k++)
+        if (!isfinite(v[k]))
+            return (long)k;
+    return -1;
+}
+
+static int non_finite(const struct vtu_cloud *c, const char *file,
+                      const char *what, const double *v, int ncomp, long k)
+{
+    const struct vtu_field *id = vtu_find(c, "id");
+    size_t i = (size_t)k / (size_t)ncomp;
+    char who[64] = "";
+    if (id && id->type == VTU_INT64 && id->ncomp == 1)
+        snprintf(who, sizeof who, " (id %lld)",
+                 (long long)((const int64_t *)id->data)[i]);
+    return sim_error(SIM_ERR_INPUT, "%s: %s holds %g at point %zu%s, "
+                     "component %d: a state to start from must be finite",
+                     file, what, v[k], i, who, (int)((size_t)k % ncomp));
+}
+
+int vtu_check_finite(const struct vtu_cloud *c, const char *file)
+{
+    char what[96];
+    long k;
+    if (!isfinite(c->time))
+        return sim_error(SIM_ERR_INPUT, "%s: TimeValue is %g: a state to "
+                         "start from must be finite", file, c->time);
+    if ((k = first_non_finite(c->points, 3 * c->n)) >= 0)
+        return non_finite(c, file, "Points", c->points, 3, k);
+    for (int f = 0; f < c->nfields; f++) {
+        const struct vtu_field *x = &c->fields[f];
+        if (x->type != VTU_FLOAT64)
+            continue;
+        k = first_non_finite(x->data, c->n * (size_t)x->ncomp);
+        if (k < 0)
+            continue;
+        snprintf(what, sizeof what, "point field '%s'", x->name);
+        return non_finite(c, file, what, x->data, x->ncomp, k);
+    }
     return SIM_OK;
 }
 

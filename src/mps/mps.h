@@ -175,6 +175,14 @@ int mps_solver_init(struct mps_solver *s, struct mps_particles *P,
                     struct linsolve *ls);
 void mps_solver_free(struct mps_solver *s);
 
+/* The domain box that mps_solver_init puts around the particles must fit
+ * the neighbour cells (cells_build's limits); otherwise SIM_ERR_INPUT
+ * naming the particle farthest from the others (id, position) and
+ * `origin`, the file they came from (NULL: "the start state"). */
+int mps_check_extent(const struct mps_particles *P,
+                     const struct mps_settings *S, double dp,
+                     const char *origin);
+
 /* Allocate particle arrays for n particles (zeroed; partner = -1). */
 int mps_particles_alloc(struct mps_particles *P, int n, int dim);
 void mps_particles_free(struct mps_particles *P);

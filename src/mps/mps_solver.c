@@ -2,6 +2,7 @@
  * operator radius, the box, work storage, wall/dummy partners) and the
  * neighbour phase of a step. */
 #include <math.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -37,31 +38,95 @@ void mps_settings_default(struct mps_settings *S)
     S->max_escape_fraction = 0.05;
 }
 
+/* Largest operator radius, and the list radius (the cell size). */
+static double radius_max(const struct mps_settings *S, double dp)
+{
+    return dp * fmax(S->re_n, fmax(S->re_grad, S->re_lap));
+}
+
+static double list_radius(const struct mps_settings *S, double dp)
+{
+    return radius_max(S, dp) + dp * (S->skin > 0 ? S->skin
+                                     : S->predictor ? 0.5 : 0.0);
+}
+
 /* Box = bounding box of the start state, widened so that splash has room;
  * the vertical axis gets as much room again above. */
-static void set_box(struct mps_solver *s)
+static void box_of(const struct mps_particles *P, double re_max,
+                   double lo[3], double hi[3])
 {
-    const struct mps_particles *P = &s->P;
     int d = P->dim;
     for (int k = 0; k < 3; k++) {
-        s->box_lo[k] = INFINITY;
-        s->box_hi[k] = -INFINITY;
+        lo[k] = INFINITY;
+        hi[k] = -INFINITY;
     }
     for (int i = 0; i < P->n; i++)
         for (int k = 0; k < d; k++) {
-            s->box_lo[k] = fmin(s->box_lo[k], P->x[3 * i + k]);
-            s->box_hi[k] = fmax(s->box_hi[k], P->x[3 * i + k]);
+            lo[k] = fmin(lo[k], P->x[3 * i + k]);
+            hi[k] = fmax(hi[k], P->x[3 * i + k]);
         }
     for (int k = 0; k < 3; k++) {
         if (k >= d) {
-            s->box_lo[k] = s->box_hi[k] = 0;
+            lo[k] = hi[k] = 0;
             continue;
         }
-        double ext = s->box_hi[k] - s->box_lo[k];
-        double m = fmax(4 * s->re_max, 0.25 * ext);
-        s->box_lo[k] -= m;
-        s->box_hi[k] += m + (k == d - 1 ? ext : 0);
+        double ext = hi[k] - lo[k];
+        double m = fmax(4 * re_max, 0.25 * ext);
+        lo[k] -= m;
+        hi[k] += m + (k == d - 1 ? ext : 0);
     }
+}
+
+static int cmp_double(const void *a, const void *b)
+{
+    double x = *(const double *)a, y = *(const double *)b;
+    return (x > y) - (x < y);
+}
+
+int mps_check_extent(const struct mps_particles *P,
+                     const struct mps_settings *S, double dp,
+                     const char *origin)
+{
+    double lo[3], hi[3], h = list_radius(S, dp), cells = 1, worst = 0;
+    int axis = 0;
+    box_of(P, radius_max(S, dp), lo, hi);
+    for (int k = 0; k < P->dim; k++) {
+        double m = floor((hi[k] - lo[k]) / h) + 1;
+        cells *= m;
+        if (m > worst) {
+            worst = m;
+            axis = k;
+        }
+    }
+    /* the limits of cells_build */
+    if (worst <= 1e9 && cells <= 2147483647.0)
+        return SIM_OK;
+    /* One stray particle (a corrupted or diverged state) is the usual
+     * cause: name the one farthest from the median along that axis. */
+    double *c = sim_malloc(((size_t)P->n + 1) * sizeof *c);
+    if (!c)
+        return SIM_ERR_NOMEM;
+    for (int i = 0; i < P->n; i++)
+        c[i] = P->x[3 * i + axis];
+    qsort(c, (size_t)P->n, sizeof *c, cmp_double);
+    double med = P->n ? c[P->n / 2] : 0, far = -1;
+    free(c);
+    int which = 0;
+    for (int i = 0; i < P->n; i++)
+        if (fabs(P->x[3 * i + axis] - med) > far) {
+            far = fabs(P->x[3 * i + axis] - med);
+            which = i;
+        }
+    const double *x = P->x + 3 * which;
+    char who[64] = "";
+    if (P->id)
+        snprintf(who, sizeof who, "id %lld, ", (long long)P->id[which]);
+    return sim_error(SIM_ERR_INPUT, "%s: particle (%spoint %d) at "
+                     "(%g %g %g) lies %g m from the median of the particles "
+                     "along %c: the domain box around them would need %.3g "
+                     "neighbour cells of %g m (at most 2^31)",
+                     origin ? origin : "the start state", who, which, x[0],
+                     x[1], x[2], far, "xyz"[axis], cells, h);
 }
 
 static int alloc_work(struct mps_solver *s)
@@ -106,7 +171,7 @@ int mps_solver_init(struct mps_solver *s, struct mps_particles *P,
     TRY(mps_lattice_constants(K, d, dp, S->re_n * dp, &s->Ln));
     TRY(mps_lattice_constants(K, d, dp, S->re_grad * dp, &s->Lg));
     TRY(mps_lattice_constants(K, d, dp, S->re_lap * dp, &s->Ll));
-    s->re_max = dp * fmax(S->re_n, fmax(S->re_grad, S->re_lap));
+    s->re_max = radius_max(S, dp);
     /* Rows split at the larger of the number-density and gradient radii
      * when the Laplacian's is larger: their operators (and the collision
      * model) then skip the outer pairs, 60-70 % of a row at 2.1 / 3.1 dp. */
@@ -115,8 +180,7 @@ int mps_solver_init(struct mps_solver *s, struct mps_particles *P,
     /* With the predictor, pairs are re-measured at r* = r + dt u*: a skin
      * of half a spacing keeps pairs that come into range (a Courant
      * number below 0.25 moves two particles together by < 0.5 dp). */
-    s->r_list = s->re_max + dp * (S->skin > 0 ? S->skin
-                                              : S->predictor ? 0.5 : 0.0);
+    s->r_list = list_radius(S, dp);
     log_info("MPS lattice (%d-D, dp = %g m, kernel %s):", d, dp, K->name);
     log_info("    number density r_e = %g dp: n0 = %.6f, %d neighbours, "
              "|F0| = %.4f", S->re_n, s->Ln.n0, s->Ln.nnb, s->Ln.f0);
@@ -125,7 +189,8 @@ int mps_solver_init(struct mps_solver *s, struct mps_particles *P,
              S->re_lap, s->Ll.n0, s->Ll.lambda / (dp * dp));
     for (int i = 0; i < s->P.n; i++)
         s->n_fluid0 += s->P.type[i] == MPS_FLUID;
-    set_box(s);
+    TRY(mps_check_extent(&s->P, S, dp, NULL));
+    box_of(&s->P, s->re_max, s->box_lo, s->box_hi);
     TRY(alloc_work(s));
     s->all_rows = 1;
     TRY(mps_neighbours(s));

@@ -65,6 +65,22 @@ fresh system/particleDict
 rm -f "$c/0/dem.vtu"
 expect_fail missingGrains "0/dem.vtu"
 
+# steps that do not advance time (issue 14 item 5)
+fresh system/controlDict "deltaT=1e-300"
+expect_fail tinyDeltaT "system/controlDict:[0-9]+:[0-9]+: deltaT = 1e-300 is too small for times up to 0.0005 s: t \+ deltaT == t"
+fresh system/demSolution "integrator=verlet" "verletCoeffs/deltaT=1e-300"
+expect_fail tinyVerletDeltaT "system/demSolution:[0-9]+:[0-9]+: deltaT 1e-300 s is below 1e-06 of the stability bound"
+fresh system/demSolution "integrator=verlet" "verletCoeffs/rayleighFraction=1e-300"
+expect_fail tinyRayleighFraction "system/demSolution:[0-9]+:[0-9]+: rayleighFraction 1e-300 must be in \[1e-06, 1\]"
+
+# a start state holding inf, and a stray grain at x = 1e300
+fresh system/particleDict
+sed -i '/Name="velocity"/{n;n;s/^[^ ]*/inf/}' "$c/0/dem.vtu"
+expect_fail infVelocity "0/dem.vtu: point field 'velocity' holds inf at point 1 \(id 1\), component 0"
+fresh system/particleDict
+sed -i '/<Points>/{n;n;n;s/^[^ ]*/1e300/}' "$c/0/dem.vtu"
+expect_fail strayGrain "0/dem.vtu: 1 contacts overlap .* e\.g\. grain id 1 at \(1e\+300 .*\) and wall [0-9]+ of patch tank"
+
 # right bead 0.9 d from the left one: overlap 0.2 R > maxFraction 0.05
 fresh system/particleDict "regions/right/min=(0.02108 0.00365 0.00865)" \
     "regions/right/max=(0.02378 0.00635 0.01135)"

@@ -68,4 +68,53 @@ expect corruptedVtu "$work/log" "0.001/dem.vtu" $rc
 # 6. An unknown option.
 "$BIN/genParticles" -caes x > "$work/log" 2>&1; rc=$?
 expect unknownOption "$work/log" "unknown option '-caes'" $rc
+
+# Out-of-range and non-finite input (issue 14 item 5): refused at read time
+# naming the file and key (or field and point), and nothing written.
+# snapshot: the case's files and their contents, logs and locks aside
+snapshot() { (cd "$work/case" && find . -type f ! -name 'log*' ! -name '.*.lock' \
+                  | sort | xargs md5sum | md5sum); }
+# refused NAME PROGRAM PATTERN: PROGRAM fails with PATTERN, the case unchanged
+refused()
+{
+    local before; before=$(snapshot)
+    (cd "$work/case" && "$BIN/$2" > "$work/log" 2>&1); rc=$?
+    expect "$1" "$work/log" "$3" $rc
+    [ "$before" = "$(snapshot)" ] && pass "$1NoOutput" || fail "$1NoOutput" "the case changed"
+}
+coupled()   # one grain settling in water: mpsFluid and demSolid coupled
+{
+    rm -rf "$work/case"; cp -r "$ROOT/tutorials/mpsDem/singleGrainSettling" "$work/case"
+    (cd "$work/case" && "$BIN/genParticles" > /dev/null 2>&1)
+}
+tank()      # a 2-D hydrostatic tank, fixed deltaT, ascii clouds
+{
+    rm -rf "$work/case"; cp -r "$ROOT/tutorials/mpsFluid/hydrostaticTank2D" "$work/case"
+    "$BIN/dictTool" -case "$work/case" system/particleDict -set writeFormat=ascii > /dev/null
+    (cd "$work/case" && "$BIN/genParticles" > /dev/null 2>&1)
+}
+
+# 7. couplingDict times that overflowed the channel's nanosecond clocks.
+coupled
+"$BIN/dictTool" -case "$work/case" system/couplingDict -set timeout=1e11 > /dev/null
+refused couplingTimeout demSolid "system/couplingDict:[0-9]+:[0-9]+: timeout must be in \(0, 1e\+08\] \[s\], not 1e\+11"
+coupled
+"$BIN/dictTool" -case "$work/case" system/couplingDict -set timeout=1e8 > /dev/null
+"$BIN/dictTool" -case "$work/case" system/couplingDict -set heartbeatInterval=2e10 > /dev/null
+refused couplingHeartbeat mpsFluid "system/couplingDict:[0-9]+:[0-9]+: heartbeatInterval must be in \(0, timeout = 1e\+08\] \[s\], not 2e\+10"
+
+# 8. A step that does not advance time.
+tank
+"$BIN/dictTool" -case "$work/case" system/controlDict -set deltaT=1e-300 > /dev/null
+refused tinyDeltaT mpsFluid "system/controlDict:[0-9]+:[0-9]+: deltaT = 1e-300 is too small for times up to 1 s: t \+ deltaT == t"
+
+# 9. A start state holding inf.
+tank
+sed -i '/Name="pressure"/{n;s/^[^ ]*/inf/}' "$work/case/0/fluid.vtu"
+refused infPressure mpsFluid "0/fluid.vtu: point field 'pressure' holds inf at point 0 \(id 0\), component 0"
+
+# 10. A stray particle at x = 1e300: named with its id and file.
+tank
+sed -i '/<Points>/{n;n;s/^[^ ]*/1e300/}' "$work/case/0/fluid.vtu"
+refused strayParticle mpsFluid "0/fluid.vtu: particle \(id 0, point 0\) at \(1e\+300 .*\) lies 1e\+300 m from the median"
 exit $status

@@ -216,8 +216,12 @@ static int create_fluid(struct fluid *f)
     app_path(&f->app, rel, path, sizeof path);
     rc = vtu_read(path, &c);
     if (!rc)
+        rc = vtu_check_finite(&c, path);
+    if (!rc)
         rc = copy_cloud(f, &c, path, &P);
     vtu_cloud_free(&c);
+    if (!rc && (rc = mps_check_extent(&P, &S, f->dp, path)) != SIM_OK)
+        mps_particles_free(&P);
     if (rc) {
         linsolve_free(ls);
         return rc;
