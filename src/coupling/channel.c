@@ -37,6 +37,15 @@
  * mapping, and every frame received by the peer's ring descriptor checked
  * against the mapping and the file size (channel_frame.c, channel_impl.h).
  * Strings of the peer (program, units, case path) are read with bounds.
+ *
+ * The handshake (compare_agreement) stops both programs with SIM_ERR_PEER
+ * and "<what> differs: <us> has '<ours>', <peer> (pid N) has '<theirs>'"
+ * when they disagree on, in this order: the protocol version, the case
+ * path, the dimension, the units, endTime (exactly: both read the same
+ * controlDict; before protocol 2 a different endTime showed only at the
+ * end, one program finishing and the other finding the channel closed),
+ * and the digest of the coupling settings. deltaT and startTime show in
+ * the time of the first frame (couple_fluid.c, couple_dem.c).
  */
 #include "coupling/channel_impl.h"
 #include "core/error.h"
@@ -457,6 +466,16 @@ static int ready_peer_published(struct channel *c, void *arg)
     return atomic_load(&c->hdr->side[c->peer].state) >= SIDE_READY;
 }
 
+/* The shortest "%.*g" that reads back as x: "0.5", not 0.50000000000000000. */
+static void shortest_g(char *buf, size_t n, double x)
+{
+    for (int p = 1; p <= 17; p++) {
+        snprintf(buf, n, "%.*g", p, x);
+        if (strtod(buf, NULL) == x)
+            return;
+    }
+}
+
 /* What this side agrees to, from its own settings (not read back). */
 static void own_agreement(const struct channel *c, struct chan_agree *a)
 {
@@ -464,6 +483,7 @@ static void own_agreement(const struct channel *c, struct chan_agree *a)
     a->protocol = CHANNEL_PROTOCOL_VERSION;
     a->dimension = c->set.dimension;
     snprintf(a->units, sizeof a->units, "%s", c->set.units);
+    a->end_time = c->set.end_time;
     a->digest = c->set.digest;
     snprintf(a->case_path, sizeof a->case_path, "%s", c->set.case_path);
 }
@@ -499,6 +519,14 @@ static int compare_agreement(struct channel *c)
         snprintf(mine, sizeof mine, "%.*s", (int)sizeof a->units, a->units);
         snprintf(theirs, sizeof theirs, "%.*s", (int)sizeof b->units,
                  b->units);
+    } else if (!(a->end_time == b->end_time)) {
+        /* exactly: both read the same controlDict, and a program whose
+         * endTime is larger by a round-off would take one more (tiny) step
+         * and wait for a peer that has left */
+        what = "endTime (system/controlDict; was it edited between the two "
+               "starts?)";
+        shortest_g(mine, sizeof mine, a->end_time);
+        shortest_g(theirs, sizeof theirs, b->end_time);
     } else if (a->digest != b->digest) {
         what = "coupling settings (digest of system/couplingDict as "
                "expanded; was it edited between the two starts?)";

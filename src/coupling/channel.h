@@ -89,7 +89,7 @@ struct channel;
 
 enum channel_side { CHANNEL_FLUID = 0, CHANNEL_SOLID = 1 };
 
-#define CHANNEL_PROTOCOL_VERSION 1
+#define CHANNEL_PROTOCOL_VERSION 2 /* 2: endTime in the handshake      */
 #define CHANNEL_NAME_MAX 128        /* including the leading '/'          */
 #define CHANNEL_PATH_MAX 1024       /* longest case path the header keeps */
 #define CHANNEL_HUNG_HEARTBEATS 20  /* silent intervals before "hung"     */
@@ -107,9 +107,11 @@ struct channel_settings {
     double heartbeat_interval; /* [s] period of this program's heartbeat   */
     int nslots;                /* frames in flight per direction, >= 1     */
     size_t slot_bytes;         /* initial payload capacity of a frame [B]  */
-    /* Checked at the handshake; both sides must give the same values. */
+    /* Checked at the handshake; both sides must give the same values
+     * (channel.c says in which order and how a mismatch reads). */
     int dimension;             /* 2 or 3                                   */
     char units[32];            /* "SI"                                     */
+    double end_time;           /* [s] endTime of system/controlDict        */
     uint64_t digest;           /* hash of the coupling settings both read  */
     int quiet;                 /* 1: no log_info lines (tests)             */
 };
@@ -127,7 +129,8 @@ struct channel_frame {
 };
 
 /* Defaults: name "", timeout 60 s, heartbeat 0.1 s, 2 slots of 64 KiB,
- * dimension 3, units "SI", digest 0. case_path is made absolute. */
+ * dimension 3, units "SI", end_time 0, digest 0. case_path is made
+ * absolute. */
 int channel_settings_default(struct channel_settings *s, int side,
                              const char *program, const char *case_dir);
 

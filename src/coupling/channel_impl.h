@@ -53,6 +53,7 @@ struct chan_agree {
     uint32_t protocol;
     int32_t dimension;
     char units[32];
+    double end_time;
     uint64_t digest;
     char case_path[CHANNEL_PATH_MAX];
 };

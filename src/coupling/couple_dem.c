@@ -175,13 +175,15 @@ void couple_dem_state(const struct couple_dem *cd, const struct dem *d,
 }
 
 int couple_dem_open(struct couple_dem *cd, const struct dict *coupling,
-                    const char *case_dir, const char *program, int dim)
+                    const char *case_dir, const char *program, int dim,
+                    double end_time)
 {
     struct channel_settings cs;
     TRY(channel_signals_install());
     TRY(channel_settings_default(&cs, CHANNEL_SOLID, program, case_dir));
     TRY(channel_settings_from_dict(coupling, &cs));
     cs.dimension = dim;
+    cs.end_time = end_time;
     return channel_open(&cs, &cd->ch);
 }
 

@@ -79,9 +79,11 @@ int couple_dem_after(struct couple_dem *cd, struct dem *d);
 void couple_dem_state(const struct couple_dem *cd, const struct dem *d,
                       struct proto_dem_state *st);
 
-/* Channel. */
+/* Channel: open (couplingDict channel keys; the dimension and endTime of
+ * the case, which the handshake compares with the fluid's). */
 int couple_dem_open(struct couple_dem *cd, const struct dict *coupling,
-                    const char *case_dir, const char *program, int dim);
+                    const char *case_dir, const char *program, int dim,
+                    double end_time);
 /* Send the state at time t (after couple_dem_after, or the initial state
  * with zero drag when no advance happened yet). With `scheme concurrent`
  * the state at endTime is not sent: the fluid takes the DEM state at t^m

@@ -323,13 +323,15 @@ void couple_fluid_reaction_total(const struct couple_fluid *cf,
 }
 
 int couple_fluid_open(struct couple_fluid *cf, const struct dict *coupling,
-                      const char *case_dir, const char *program)
+                      const char *case_dir, const char *program,
+                      double end_time)
 {
     struct channel_settings cs;
     TRY(channel_signals_install());
     TRY(channel_settings_default(&cs, CHANNEL_FLUID, program, case_dir));
     TRY(channel_settings_from_dict(coupling, &cs));
     cs.dimension = cf->dim;
+    cs.end_time = end_time;
     return channel_open(&cs, &cf->ch);
 }
 

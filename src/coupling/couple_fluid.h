@@ -107,9 +107,11 @@ int couple_fluid_grain_fields(struct couple_fluid *cf, struct mps_solver *s);
 void couple_fluid_reaction_total(const struct couple_fluid *cf,
                                  const struct mps_solver *s, double F[3]);
 
-/* Channel: open (couplingDict channel keys; dimension of the case). */
+/* Channel: open (couplingDict channel keys; the dimension and endTime of
+ * the case, which the handshake compares with the DEM's). */
 int couple_fluid_open(struct couple_fluid *cf, const struct dict *coupling,
-                      const char *case_dir, const char *program);
+                      const char *case_dir, const char *program,
+                      double end_time);
 /* One exchange before the step t -> t + dt (see the top of this file).
  * The DEM state must arrive at t + dt (same coupling interval on both
  * sides), else SIM_ERR_INPUT naming both controlDicts. */

@@ -351,7 +351,7 @@ int main(int argc, char **argv)
     dict_warn_unused(s.solution);
     if (s.coupled) {
         if ((rc = couple_dem_open(&s.cd, s.coupling, s.app.case_abs,
-                                  "demSolid", s.dim))
+                                  "demSolid", s.dim, s.rt.end_time))
             || (rc = couple_dem_send(&s.cd, &s.d, s.rt.step, s.d.t)))
             coupled_failure(&s, rc), app_fatal(&s.app, rc);
         dict_warn_unused(s.coupling);

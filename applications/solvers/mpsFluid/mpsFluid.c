@@ -458,7 +458,7 @@ int main(int argc, char **argv)
     dict_warn_unused(f.transport);
     if (f.coupled) {
         if ((rc = couple_fluid_open(&f.cf, f.coupling, f.app.case_abs,
-                                    "mpsFluid")))
+                                    "mpsFluid", f.rt.end_time)))
             app_fatal(&f.app, rc);
         dict_warn_unused(f.coupling);
     }

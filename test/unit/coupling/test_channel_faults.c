@@ -29,6 +29,7 @@ static void alter(struct channel_settings *s, int what)
     case 1: strcpy(s->units, "cgs"); break;
     case 2: s->digest = 12345; break;
     case 3: strcpy(s->case_path, "/tmp/otherCase"); break;
+    case 4: s->end_time = 2.5; break;
     }
 }
 
@@ -49,9 +50,10 @@ static void test_handshake_mismatch(void **state)
     static const char *const what[] = { "dimension differs",
                                         "units differs",
                                         "coupling settings",
-                                        "case path differs" };
+                                        "case path differs",
+                                        "endTime" };
     (void)state;
-    for (int w = 0; w < 4; w++) {
+    for (int w = 0; w < 5; w++) {
         char name[64];
         struct channel_settings s;
         struct channel *c = NULL;
@@ -416,8 +418,12 @@ static void test_other_protocol_version_refused(void **state)
     close(fd);
     test_settings(&s, CHANNEL_SOLID, name);
     assert_int_equal(channel_open(&s, &c), SIM_ERR_INPUT);
-    assert_non_null(strstr(sim_error_message(), "protocol version 1"));
-    assert_non_null(strstr(sim_error_message(), "version 2)"));
+    char want[64];
+    snprintf(want, sizeof want, "protocol version %d",
+             CHANNEL_PROTOCOL_VERSION);
+    assert_non_null(strstr(sim_error_message(), want));
+    snprintf(want, sizeof want, "version %d)", CHANNEL_PROTOCOL_VERSION + 1);
+    assert_non_null(strstr(sim_error_message(), want));
     unlink(path);
 }
 

@@ -392,6 +392,7 @@ static void test_settling_mps(void **st)
 
 enum { CH_STEPS = 30 };
 static const double CH_DP = 0.004, CH_DT = 5e-4;
+#define CH_END (CH_STEPS * CH_DT) /* endTime both sides give the handshake */
 
 static const char *ch_scheme = "sequential";
 
@@ -414,6 +415,9 @@ static void ch_grain(struct dem *d, void **integ)
     assert_int_equal(dem_integrator_verlet.create(d, &ip, integ), 0);
 }
 
+/* endTime the DEM side gives the handshake; < 0: CH_END, the fluid's */
+static double ch_dem_end = -1;
+
 /* demSolid's start in a child process: the grain, the glue, the channel
  * and the state at t = 0. */
 static int dem_side_start(const char *name, struct couple_dem *cd,
@@ -423,7 +427,8 @@ static int dem_side_start(const char *name, struct couple_dem *cd,
     ch_grain(d, integ);
     int rc = couple_dem_init(cd, cdd, tp, d->gravity);
     if (!rc)
-        rc = couple_dem_open(cd, cdd, "/tmp", "demSolid", 2);
+        rc = couple_dem_open(cd, cdd, "/tmp", "demSolid", 2,
+                             ch_dem_end < 0 ? CH_END : ch_dem_end);
     if (!rc)
         rc = couple_dem_send(cd, d, 0, d->t);
     return rc;
@@ -465,7 +470,8 @@ static void fluid_run(int channel, const char *name, double out[5])
     make_fluid(&s, 20, 20, 0, CH_DP);
     assert_int_equal(couple_fluid_init(&cf, cdd, &s), 0);
     if (channel) {
-        assert_int_equal(couple_fluid_open(&cf, cdd, "/tmp", "mpsFluid"), 0);
+        assert_int_equal(couple_fluid_open(&cf, cdd, "/tmp", "mpsFluid",
+                                           CH_END), 0);
         for (int m = 0; m < CH_STEPS; m++) {
             assert_int_equal(couple_fluid_exchange(&cf, &s, m, m * CH_DT,
                                                    CH_DT), 0);
@@ -608,12 +614,63 @@ static void test_channel_wrong_interval(void **st)
     struct couple_fluid cf;
     make_fluid(&s, 20, 20, 0, CH_DP);
     assert_int_equal(couple_fluid_init(&cf, cdd, &s), 0);
-    assert_int_equal(couple_fluid_open(&cf, cdd, "/tmp", "mpsFluid"), 0);
+    assert_int_equal(couple_fluid_open(&cf, cdd, "/tmp", "mpsFluid",
+                                       CH_END), 0);
     int rc = couple_fluid_exchange(&cf, &s, 0, 0.0, CH_DT);
     print_message("refused: %s\n", sim_error_message());
     assert_int_equal(rc, SIM_ERR_INPUT);
     assert_non_null(strstr(sim_error_message(), "controlDict"));
     couple_fluid_close(&cf, rc);
+    int status;
+    assert_int_equal(waitpid(pid, &status, 0), pid);
+    assert_true(WIFEXITED(status) && WEXITSTATUS(status) == 0);
+    char path[128];
+    snprintf(path, sizeof path, "/dev/shm/%s", name);
+    assert_int_equal(access(path, F_OK), -1);   /* nothing left behind */
+    couple_fluid_free(&cf);
+    mps_solver_free(&s);
+    dict_free(cdd);
+}
+
+/* Different endTimes are refused at the handshake by both programs,
+ * naming endTime and both values (they used to be found at the end only:
+ * the DEM finished, exit 0, and the fluid found the channel closed). */
+static int dem_side_other_end(void *arg)
+{
+    struct couple_dem cd;
+    struct dem d;
+    void *integ;
+    int rc = dem_side_start(arg, &cd, &d, &integ);
+    int named = rc == SIM_ERR_PEER &&
+                strstr(sim_error_message(), "endTime") &&
+                strstr(sim_error_message(), "demSolid has '0.03'");
+    couple_dem_close(&cd, rc);
+    return named ? 0 : 1;
+}
+
+static void test_channel_wrong_end_time(void **st)
+{
+    (void)st;
+    char name[64];
+    log_set_quiet(1);
+    snprintf(name, sizeof name, "mpsdem-glue-end-%d", (int)getpid());
+    ch_dem_end = 0.03;
+    fflush(stdout);
+    pid_t pid = fork();
+    if (pid == 0)
+        _exit(dem_side_other_end(name));
+    ch_dem_end = -1;
+    struct dict *cdd = channel_dict(name);
+    struct mps_solver s;
+    struct couple_fluid cf;
+    make_fluid(&s, 20, 20, 0, CH_DP);
+    assert_int_equal(couple_fluid_init(&cf, cdd, &s), 0);
+    int rc = couple_fluid_open(&cf, cdd, "/tmp", "mpsFluid", 0.015);
+    print_message("refused: %s\n", sim_error_message());
+    assert_int_equal(rc, SIM_ERR_PEER);
+    assert_non_null(strstr(sim_error_message(), "endTime"));
+    assert_non_null(strstr(sim_error_message(), "mpsFluid has '0.015'"));
+    assert_non_null(strstr(sim_error_message(), "has '0.03'"));
     int status;
     assert_int_equal(waitpid(pid, &status, 0), pid);
     assert_true(WIFEXITED(status) && WEXITSTATUS(status) == 0);
@@ -638,6 +695,7 @@ int main(void)
         cmocka_unit_test(test_settling_mps),
         cmocka_unit_test(test_channel_matches_in_process),
         cmocka_unit_test(test_channel_wrong_interval),
+        cmocka_unit_test(test_channel_wrong_end_time),
         cmocka_unit_test(test_channel_concurrent),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
