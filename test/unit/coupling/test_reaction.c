@@ -417,8 +417,13 @@ static void test_settings(void **state)
     assert_int_equal(s.model, COUPLING_MODEL_B);
     assert_ptr_equal(s.drag, &drag_ergun_wen_yu);
     assert_true(s.radius == 4.1 && s.eps_min == 0.3 && s.skin == 0);
-    assert_true(s.phi_relax == 0 && s.porous_walls == 1);
+    /* defaults since issue 23: walls of weight 1, B's superficial PPE
+     * divergence; A's default is its own intrinsic eq. 12 */
+    assert_true(s.phi_relax == 0 && s.porous_walls == 0);
+    assert_int_equal(s.superficial, 1);
+    assert_int_equal(read_settings("model A;\n", &s), 0);
     assert_int_equal(s.superficial, 0);
+    assert_int_equal(s.porous_walls, 0);
     assert_int_equal(read_settings("model A; dragModel gidaspowBlend;\n"
                                    "kernelRadius 3.0; porosityMin 0.25;\n"
                                    "pairSkin 0.3;\n", &s), 0);
@@ -440,13 +445,15 @@ static void test_settings(void **state)
     assert_int_equal(read_settings("volumeFractionRelaxation 0.005;\n", &s),
                      0);
     assert_true(s.phi_relax == 0.005);
+    assert_int_equal(read_settings("ppeDivergence intrinsic;\n", &s), 0);
+    assert_int_equal(s.superficial, 0);
     assert_int_equal(read_settings("ppeDivergence superficial;\n", &s), 0);
     assert_int_equal(s.superficial, 1);
     assert_int_equal(read_settings("model A; ppeDivergence superficial;\n",
                                    &s), SIM_ERR_DICT);
     assert_non_null(strstr(sim_error_message(), "ppeDivergence"));
-    assert_int_equal(read_settings("porousWalls no;\n", &s), 0);
-    assert_int_equal(s.porous_walls, 0);
+    assert_int_equal(read_settings("porousWalls yes;\n", &s), 0);
+    assert_int_equal(s.porous_walls, 1);
     assert_int_equal(read_settings("porousWalls maybe;\n", &s), SIM_ERR_DICT);
     assert_non_null(strstr(sim_error_message(), "porousWalls"));
     assert_int_equal(read_settings("\n\nvolumeFractionRelaxation -1;\n", &s),
