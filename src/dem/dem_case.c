@@ -10,7 +10,6 @@
 #include <string.h>
 
 #include "core/dict.h"
-#include "core/gravity.h"
 #include "core/error.h"
 #include "core/log.h"
 #include "core/select.h"
@@ -99,13 +98,6 @@ int dem_read_properties(const struct dict *props, struct dem *d)
         log_warn("%s: tangential model %s with mu = 0 gives no friction",
                  dict_file(props), law->tangential->name);
     return SIM_OK;
-}
-
-int dem_read_gravity(const struct dict *g, struct dem *d)
-{
-    if (!g)
-        return SIM_OK;
-    return gravity_read(g, d->gravity);
 }
 
 #define DEM_ERK_TABLE_NAMES                                                \

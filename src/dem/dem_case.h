@@ -27,9 +27,6 @@ struct dem_solution {
 /* constant/demProperties -> d->law. Errors name file:line:key. */
 int dem_read_properties(const struct dict *props, struct dem *d);
 
-/* constant/g -> d->gravity (optional file: NULL keeps (0 0 -9.81)). */
-int dem_read_gravity(const struct dict *g, struct dem *d);
-
 /* system/demSolution. Needs d->rmax set (skin default) — call after the
  * grains are read. */
 int dem_read_solution(const struct dict *sol, struct dem *d,

@@ -3,7 +3,8 @@
  * side of MPS-DEM coupling (doc/theory.md A.6; doc/design.md §4-5).
  *
  * Reads   system/controlDict, system/demSolution, constant/demProperties,
- *         constant/g (optional), system/particleDict (walls; optional),
+ *         constant/g (optional: a missing file is a logged default),
+ *         system/particleDict (walls; optional),
  *         <startTime>/dem.vtu (+ <startTime>/demContacts on restart)
  * Writes  <time>/dem.vtu, <time>/demContacts, dem.pvd, postProcessing/
  *
@@ -28,6 +29,7 @@
 #include "core/app.h"
 #include "core/dict.h"
 #include "core/error.h"
+#include "core/gravity.h"
 #include "core/log.h"
 #include "core/time.h"
 #include "coupling/couple_dem.h"
@@ -85,12 +87,11 @@ static int create_grains(struct solid *s)
     char rel[256], path[4200];
     TRY(app_read_dict(&s->app, "constant/demProperties", &s->props));
     TRY(dem_read_properties(s->props, d));
-    TRY(read_optional(s, "constant/g", &s->gravity));
-    TRY(dem_read_gravity(s->gravity, d));
     TRY(read_optional(s, "system/particleDict", &s->particles));
     s->dim = 3;
     if (s->particles)
         TRY(dem_read_walls(s->particles, d, &s->dim));
+    TRY(gravity_case(&s->app, s->dim, d->gravity, &s->gravity));
     snprintf(rel, sizeof rel, "%s/dem.vtu", s->rt.name);
     TRY(dem_read_grains(app_path(&s->app, rel, path, sizeof path), d));
     d->t = s->rt.value;

@@ -3,8 +3,9 @@
  * 2025 with eps = 1; doc/theory.md A.2-A.5, A.9, A.10; doc/design.md §5).
  *
  * Reads   system/controlDict, system/mpsSchemes, system/mpsSolution,
- *         constant/transportProperties, constant/g, constant/particlePatches
- *         (from genParticles: patch names, dimension, dp),
+ *         constant/transportProperties, constant/particlePatches
+ *         (from genParticles: patch names, dimension, dp), constant/g
+ *         (optional: a missing file is a logged default),
  *         <startTime>/fluid.vtu
  * Writes  <time>/fluid.vtu, fluid.pvd, postProcessing/<functionObject>/,
  *         postProcessing/usedParameters/mpsFluid
@@ -28,6 +29,7 @@
 #include "core/app.h"
 #include "core/dict.h"
 #include "core/error.h"
+#include "core/gravity.h"
 #include "core/log.h"
 #include "core/time.h"
 #include "coupling/couple_dem.h"
@@ -194,6 +196,7 @@ static int create_fluid(struct fluid *f)
     char rel[256], path[4400];
     struct mps_settings S;
     struct mps_particles P;
+    double g[3];
     struct vtu_cloud c = { 0 };
     struct linsolve *ls = NULL;
     const struct dict *ppe;
@@ -201,12 +204,12 @@ static int create_fluid(struct fluid *f)
 
     TRY(read_patches(f));
     TRY(app_read_dict(&f->app, "constant/transportProperties", &f->transport));
-    TRY(app_read_dict(&f->app, "constant/g", &f->gravity));
+    TRY(gravity_case(&f->app, f->dim, g, &f->gravity));
     TRY(app_read_dict(&f->app, "system/mpsSchemes", &f->schemes));
     TRY(app_read_dict(&f->app, "system/mpsSolution", &f->solution));
-    TRY(mps_settings_read(f->transport, f->gravity, f->schemes, f->solution,
-                          &S));
-    if (f->dim == 2 && S.g[2] != 0)
+    TRY(mps_settings_read(f->transport, NULL, f->schemes, f->solution, &S));
+    memcpy(S.g, g, sizeof S.g);
+    if (f->gravity && f->dim == 2 && S.g[2] != 0)
         return dict_error(f->gravity, dict_has(f->gravity, "value") ? "value"
                           : "g", SIM_ERR_DICT, "2-D case: gravity must lie "
                           "in the x-y plane, e.g. (0 -9.81 0)");

@@ -77,7 +77,8 @@ static int control_binary(const struct app *a)
     return fmt;
 }
 
-/* rho and g, needed only for an initial hydrostatic pressure. */
+/* rho and g, needed only for an initial hydrostatic pressure (a missing
+ * constant/g is then the logged default, as in the solvers). */
 static int read_physics(const struct app *a, struct gen_case *c)
 {
     static const int dims_rho[7] = { 1, -3, 0, 0, 0, 0, 0 };
@@ -95,9 +96,12 @@ static int read_physics(const struct app *a, struct gen_case *c)
         rc = dict_error(tp, "rho", SIM_ERR_DICT, "rho must be positive");
     dict_free(tp);
     TRY(rc);
-    TRY(app_read_dict(a, "constant/g", &gd));
-    rc = gravity_read(gd, c->g);
-    if (rc == SIM_OK && !(c->g[c->vertical] < 0))
+    rc = gravity_case(a, c->dim, c->g, &gd);
+    if (rc != SIM_OK || !gd) { /* the default points along -vertical */
+        dict_free(gd);
+        return rc;
+    }
+    if (!(c->g[c->vertical] < 0))
         rc = dict_error(gd, "value", SIM_ERR_DICT, "hydrostaticPressure "
                         "needs gravity along -%c (%s): g = (%g %g %g)",
                         "xyz"[c->vertical], c->dim == 2 ? "2-D" : "3-D",
