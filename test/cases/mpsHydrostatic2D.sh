@@ -12,7 +12,8 @@
 #   restart: 0 -> 0.1 s in one run equals 0 -> 0.05 s + restart to 0.1 s
 #            to round-off (1e-9 relative; measured 3e-14 relative)
 #   bad input: unknown kernel (file:line, valid names), unstable deltaT
-#   refused before the first step, PPE not converged (stops, state written),
+#   refused before the first step, PPE not converged (stops, state written
+#   to failed.<t>/, not to a time directory),
 #   missing fluid.vtu
 ROOT="$(cd "$(dirname "$0")/../.." && pwd)"
 TUT="$ROOT/tutorials/mpsFluid/hydrostaticTank2D"
@@ -114,7 +115,7 @@ sed -i 's/^deltaT .*/deltaT 5e-4;/' "$c/system/controlDict"
 sed -i 's/^    maxIter .*/    maxIter 2;/' "$c/system/mpsSolution"
 out=$(cd "$c" && "$ROOT/bin/mpsFluid" 2>&1); rc=$?
 if [ $rc -ne 0 ] && echo "$out" | grep -q "step 0: the pressure Poisson equation" \
-   && [ -f "$c/0.0005/fluid.vtu" ]; then
+   && [ -f "$c/failed.0.0005/fluid.vtu" ] && [ ! -e "$c/0.0005" ]; then
     pass mpsFluid_ppeNotConverged
 else
     fail mpsFluid_ppeNotConverged "rc $rc: $(echo "$out" | grep -A2 FATAL | tr '\n' ' ')"
