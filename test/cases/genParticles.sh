@@ -306,6 +306,10 @@ bad fluid_jitter "jitter of a fluid region must be between 0 and 0.25" \
 bad moving_wall "moving walls are not supported" 's/type    wall;/type    wall; velocity (0.1 0 0);/'
 bad grain_volume_word "valid: fill scale" \
     's/hydrostaticPressure yes;/hydrostaticPressure yes; grainVolume remove;/'
+# a forgotten ';' (issue 15 item 6): named at the next word, not "got 3 values"
+bad missing_semicolon "'min' holds a vector of 3 numbers followed by 'max': missing ';' before 'max'?" \
+    's/min     (0.12 0.03 0);     \/\/ \[m\]/min (0.12 0.03 0) max (0.16 0.07 0.04);/' \
+    '/max     (0.16 0.07 0.04);/d'
 no_leftovers leftovers_bad too_big
 
 # with MPSDEM_BIN=bin-san: a sanitizer report anywhere is a failure, even in

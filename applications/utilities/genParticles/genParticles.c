@@ -134,7 +134,7 @@ static void print_summary(const struct gen_case *c, const struct mps_cloud *m)
         const struct region *r = &c->r[i];
         log_info("    %-5d %-16s %-9s %-9s %10zu %10zu %10zu %10zu", i,
                  r->name, region_type_names[r->type],
-                 geom_shape_names[r->shape], r->count[0], r->count[1],
+                 region_shape_names[r->shape], r->count[0], r->count[1],
                  r->count[2], r->count[3]);
         for (int k = 0; k < 4; k++)
             tot[k] += r->count[k];
@@ -303,7 +303,7 @@ static int run(const struct app *a)
 
     app_path(a, "system/particleDict", path, sizeof path);
     TRY_GOTO(rc, app_read_dict(a, "system/particleDict", &d), out);
-    TRY_GOTO(rc, gen_read(&c, d, path, kernel_radius_hint(a),
+    TRY_GOTO(rc, gen_read(&c, a, d, path, kernel_radius_hint(a),
                            control_binary(a)), out);
     TRY_GOTO(rc, read_physics(a, &c), out);
     TRY_GOTO(rc, gen_check_memory(&c), out);

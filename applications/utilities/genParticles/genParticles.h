@@ -12,11 +12,23 @@
 
 #include "particles/geometry.h"
 #include "particles/lattice.h"
+#include "sizeDistribution/sizeDistribution.h"
 
+struct app;
 struct dict;
+struct grain_format_ops;
 
 enum region_type { REGION_TANK_WALL, REGION_WALL, REGION_FLUID, REGION_GRAINS };
 extern const char *const region_type_names[]; /* NULL terminated */
+
+/* Shape words of a region: geom_shape_names, then "file" (grains read
+ * from a file: fileGrains.c), NULL terminated. */
+enum { SHAPE_FILE = GEOM_HALFSPACE + 1 };
+extern const char *const region_shape_names[];
+
+/* How a grains region places its grains: on a lattice (r->lattice), by
+ * random sequential addition (randomPack.c), or as a file lists them. */
+enum grain_layout { GRAINS_LATTICE, GRAINS_RANDOM, GRAINS_FILE };
 
 /* MPS particle types (field "type" of fluid.vtu). */
 enum { TYPE_FLUID = 0, TYPE_WALL = 1, TYPE_DUMMY = 2 };
@@ -41,6 +53,16 @@ struct region {
                                fluid, fraction of dp                     */
     long seed;              /* jitter seed (grains, fluid)               */
     enum lattice_kind lattice; /* grains                                 */
+    enum grain_layout layout;  /* grains                                 */
+    struct size_dist dist;  /* random: grain diameters                   */
+    double solid_fraction;  /* random: target                            */
+    long max_attempts;      /* random: tries per grain                   */
+    char *file;             /* file: the path opened                     */
+    const struct grain_format_ops *format; /* file                       */
+    double max_overlap;     /* file: largest overlap / smaller radius    */
+    size_t fn;              /* file: grains read                         */
+    double *fx, *fr;        /* file: centres (3 fn) and radii [m]        */
+    long *fline;            /* file: line of each grain in the file      */
     /* filled in by the generator */
     double clo[3], chi[3];  /* box outside which it claims no site [m]   */
     size_t count[4];        /* fluid, wall, dummy, grains                */
@@ -48,6 +70,7 @@ struct region {
 };
 
 struct gen_case {
+    const struct app *app;  /* the case: files are relative to it        */
     const char *dict_path;  /* "system/particleDict" as opened          */
     const struct dict *d;
     int dim;                /* 2 or 3                                    */
@@ -80,9 +103,23 @@ struct dem_cloud {
 /* particleDict.c: read and check the dictionary; kernel_radius_hint is
  * r_e / dp from system/mpsSchemes or 0 when unknown; binary_default the
  * writeFormat of system/controlDict (1 binary, 0 ascii). */
-int gen_read(struct gen_case *c, const struct dict *d, const char *path,
-             double kernel_radius_hint, int binary_default);
+int gen_read(struct gen_case *c, const struct app *a, const struct dict *d,
+             const char *path, double kernel_radius_hint, int binary_default);
 void gen_case_free(struct gen_case *c);
+
+/* fileGrains.c: `shape file` regions. gen_file_read reads the region's
+ * keys and its file (every row checked, radii positive); gen_file_check,
+ * once every region is known, refuses grains outside the tanks and
+ * overlaps above maxOverlap, naming the lines. */
+int gen_file_read(const struct gen_case *c, struct region *r);
+int gen_file_check(const struct gen_case *c, const struct region *r);
+
+/* randomPack.c: `lattice random` regions. gen_random_read reads their
+ * keys; gen_random_pack places the grains (centres 3n, radii n). */
+int gen_random_read(const struct gen_case *c, struct region *r);
+double gen_region_volume(const struct region *r);
+int gen_random_pack(const struct gen_case *c, const struct region *r,
+                    double **x, double **radius, size_t *n);
 
 /* generate.c */
 int gen_check_memory(const struct gen_case *c);

@@ -23,7 +23,8 @@
  *
  * Grains are placed on their own lattice per region, anchored a radius
  * (plus the jitter amplitude) inside the region's lower corner, and kept
- * when the whole grain lies inside the region.
+ * when the whole grain lies inside the region; or at random (randomPack.c);
+ * or where a file puts them (fileGrains.c).
  */
 #include <math.h>
 #include <stdlib.h>
@@ -150,6 +151,17 @@ int gen_check_memory(const struct gen_case *c)
         double lo[3], hi[3], v = 1;
         if (r->type != REGION_GRAINS) {
             any_mps = 1;
+            continue;
+        }
+        if (r->layout == GRAINS_FILE) {
+            grains += (double)r->fn;
+            continue;
+        }
+        if (r->layout == GRAINS_RANDOM) { /* at most, all of the smallest */
+            double d = r->dist.min;
+            grains += r->solid_fraction * gen_region_volume(r) /
+                      (c->dim == 2 ? M_PI * d * d / 4 : M_PI * d * d * d / 6)
+                      + 1;
             continue;
         }
         geom_bbox(&r->g, lo, hi);
@@ -312,29 +324,66 @@ static int grain_fits(const double x[3], void *ctx)
     return geom_distance(f->g, x) <= f->limit;
 }
 
-/* Grain centres of region r, appended to m->x. */
-static int gen_grains(const struct gen_case *c, struct region *r,
-                      struct dem_cloud *m)
+/* Grain centres of a lattice region; radii all the same. */
+static int lattice_grains(const struct gen_case *c, const struct region *r,
+                          double **x, double **radius, size_t *n)
 {
     double rad = 0.5 * r->diameter, amp = r->jitter * r->spacing;
-    double lo[3], hi[3], *x, *nx;
+    double lo[3], hi[3];
     struct lattice l = { r->lattice, c->dim, { 0, 0, 0 }, r->spacing };
     struct grain_fit fit = { &r->g, -(rad + amp) + TOL * r->spacing };
-    size_t n;
 
     geom_bbox(&r->g, lo, hi);
     for (int d = 0; d < c->dim; d++)
         l.origin[d] = lo[d] + rad + amp;
-    TRY(lattice_fill(&l, lo, hi, grain_fits, &fit, &x, &n));
-    lattice_jitter(x, n, c->dim, amp, (uint64_t)r->seed);
-    nx = sim_realloc(m->x, 3 * (m->n + n + 1) * sizeof *nx);
-    if (!nx) {
-        free(x);
+    TRY(lattice_fill(&l, lo, hi, grain_fits, &fit, x, n));
+    lattice_jitter(*x, *n, c->dim, amp, (uint64_t)r->seed);
+    *radius = sim_malloc((*n ? *n : 1) * sizeof **radius);
+    if (!*radius) {
+        free(*x);
         return SIM_ERR_NOMEM;
     }
-    m->x = nx;
-    memcpy(m->x + 3 * m->n, x, 3 * n * sizeof *x);
-    free(x);
+    for (size_t k = 0; k < *n; k++)
+        (*radius)[k] = rad;
+    return SIM_OK;
+}
+
+/* Grains of region r (centres, radii) appended to m. */
+static int gen_grains(const struct gen_case *c, struct region *r,
+                      struct dem_cloud *m)
+{
+    double *x = NULL, *rad = NULL, *nx, *nr;
+    size_t n = 0;
+
+    switch (r->layout) {
+    case GRAINS_LATTICE:
+        TRY(lattice_grains(c, r, &x, &rad, &n));
+        break;
+    case GRAINS_RANDOM:
+        TRY(gen_random_pack(c, r, &x, &rad, &n));
+        break;
+    case GRAINS_FILE:
+        x = r->fx;
+        rad = r->fr;
+        n = r->fn;
+        break;
+    }
+    nx = sim_realloc(m->x, 3 * (m->n + n + 1) * sizeof *nx);
+    if (nx)
+        m->x = nx;
+    nr = nx ? sim_realloc(m->radius, (m->n + n + 1) * sizeof *nr) : NULL;
+    if (nr)
+        m->radius = nr;
+    if (nx && nr) {
+        memcpy(m->x + 3 * m->n, x, 3 * n * sizeof *x);
+        memcpy(m->radius + m->n, rad, n * sizeof *rad);
+    }
+    if (r->layout != GRAINS_FILE) { /* the region keeps a file's */
+        free(x);
+        free(rad);
+    }
+    if (!nx || !nr)
+        return SIM_ERR_NOMEM;
     r->count[3] = n;
     m->n += n;
     return SIM_OK;
@@ -350,7 +399,8 @@ int gen_dem(struct gen_case *c, struct dem_cloud *m)
             TRY(gen_grains(c, &c->r[i], m));
     TRY(check_counts(c, 1));
     n = m->n ? m->n : 1;
-    m->radius = sim_calloc(n, sizeof *m->radius);
+    if (!m->radius)
+        m->radius = sim_calloc(n, sizeof *m->radius);
     m->u = sim_calloc(3 * n, sizeof *m->u);
     m->omega = sim_calloc(3 * n, sizeof *m->omega);
     m->group = sim_calloc(n, sizeof *m->group);
@@ -361,7 +411,6 @@ int gen_dem(struct gen_case *c, struct dem_cloud *m)
         if (r->type != REGION_GRAINS)
             continue;
         for (size_t j = 0; j < r->count[3]; j++, k++) {
-            m->radius[k] = 0.5 * r->diameter;
             memcpy(m->u + 3 * k, r->velocity, sizeof r->velocity);
             memcpy(m->omega + 3 * k, r->omega, sizeof r->omega);
             m->group[k] = i;

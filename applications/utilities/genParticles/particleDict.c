@@ -14,6 +14,12 @@
 
 const char *const region_type_names[] = { "tankWall", "wall", "fluid",
                                           "grains", NULL };
+const char *const region_shape_names[] = { "box", "cylinder", "sphere",
+                                           "plane", "file", NULL };
+/* the lattice kinds, then random (randomPack.c) */
+static const char *const grain_lattice_names[] = { "cubic", "hexagonal",
+                                                   "random", NULL };
+enum { LATTICE_WORD_RANDOM = 2 };
 static const char *const face_names[] = { "xmin", "xmax", "ymin", "ymax",
                                           "zmin", "zmax", NULL };
 static const char *const format_names[] = { "ascii", "binary", NULL };
@@ -35,8 +41,15 @@ static int read_shape(const struct gen_case *c, struct region *r)
     double a[3], b[3], rad = 0;
     int shape;
 
-    TRY(dict_get_word(d, "shape", geom_shape_names, &shape));
+    TRY(dict_get_word(d, "shape", region_shape_names, &shape));
     r->shape = shape;
+    if (shape == SHAPE_FILE) { /* the grains' box, once they are read */
+        if (r->type != REGION_GRAINS)
+            return dict_error(d, "shape", SIM_ERR_DICT, "region '%s': shape "
+                              "file is for grains regions (type grains)",
+                              r->name);
+        return SIM_OK;
+    }
     switch ((enum geom_shape)shape) {
     case GEOM_BOX:
         TRY(dict_get_vector(d, "min", 3, a));
@@ -100,13 +113,32 @@ static int read_grains(const struct gen_case *c, struct region *r)
     int lat;
     double lo[3], hi[3], gap;
 
-    (void)c;
-    TRY(dict_get_scalar_dim(d, "diameter", dims_length, &r->diameter));
-    if (!(r->diameter > 0) || !isfinite(r->diameter))
-        return dict_error(d, "diameter", SIM_ERR_DICT, "diameter must be "
-                          "positive");
-    TRY(dict_get_word_or(d, "lattice", lattice_kind_names, LATTICE_CUBIC,
+    if (r->shape == SHAPE_FILE) {
+        r->layout = GRAINS_FILE;
+        TRY(gen_file_read(c, r));
+        return dict_get_vector_or(d, "omega", 3, zero3, r->omega);
+    }
+    /* a random packing may take its diameters from a distribution */
+    if (dict_has(d, "diameter")) {
+        TRY(dict_get_scalar_dim(d, "diameter", dims_length, &r->diameter));
+        if (!(r->diameter > 0) || !isfinite(r->diameter))
+            return dict_error(d, "diameter", SIM_ERR_DICT, "diameter must be "
+                              "positive");
+    }
+    TRY(dict_get_word_or(d, "lattice", grain_lattice_names, LATTICE_CUBIC,
                          &lat));
+    if (lat == LATTICE_WORD_RANDOM) {
+        r->layout = GRAINS_RANDOM;
+        TRY(gen_random_read(c, r));
+        return dict_get_vector_or(d, "omega", 3, zero3, r->omega);
+    }
+    if (dict_has(d, "diameterDistribution"))
+        return dict_error(d, "diameterDistribution", SIM_ERR_DICT, "region "
+                          "'%s': a diameter distribution needs lattice "
+                          "random (a lattice has one spacing)", r->name);
+    if (!dict_has(d, "diameter")) /* "missing keyword 'diameter'" */
+        TRY(dict_get_scalar_dim(d, "diameter", dims_length, &r->diameter));
+    r->layout = GRAINS_LATTICE;
     r->lattice = (enum lattice_kind)lat;
     TRY(dict_get_scalar_dim_or(d, "spacing", dims_length, r->diameter,
                                &r->spacing));
@@ -135,10 +167,10 @@ static int read_region(const struct gen_case *c, struct region *r)
 
     double lo[3], hi[3];
 
-    TRY(read_shape(c, r));
-    r->bounded = geom_bbox(&r->g, lo, hi);
     TRY(dict_get_word(d, "type", region_type_names, &type));
     r->type = (enum region_type)type;
+    TRY(read_shape(c, r));
+    r->bounded = geom_bbox(&r->g, lo, hi);
     TRY(dict_get_vector_or(d, "velocity", 3, zero3, r->velocity));
     if (c->dim == 2)
         r->velocity[2] = 0;
@@ -315,8 +347,9 @@ static int check_in_tank(const struct gen_case *c)
         const struct region *r = &c->r[i];
         double lo[3], hi[3], tlo[3], thi[3];
         int ok = 0;
-        if (r->type == REGION_TANK_WALL || !geom_bbox(&r->g, lo, hi))
-            continue;
+        if (r->type == REGION_TANK_WALL || r->shape == SHAPE_FILE ||
+            !geom_bbox(&r->g, lo, hi))
+            continue; /* a file's grains are checked one by one */
         for (int t = 0; t < c->nregions && !ok; t++)
             if (c->r[t].type == REGION_TANK_WALL) {
                 geom_bbox(&c->r[t].g, tlo, thi);
@@ -378,13 +411,14 @@ static int mps_box(struct gen_case *c)
     return SIM_OK;
 }
 
-int gen_read(struct gen_case *c, const struct dict *d, const char *path,
-             double kernel_radius_hint, int binary_default)
+int gen_read(struct gen_case *c, const struct app *a, const struct dict *d,
+             const char *path, double kernel_radius_hint, int binary_default)
 {
     long dim;
     int fmt;
 
     memset(c, 0, sizeof *c);
+    c->app = a;
     c->d = d;
     c->dict_path = path;
     TRY(dict_get_label_or(d, "dimension", 3, &dim));
@@ -405,6 +439,9 @@ int gen_read(struct gen_case *c, const struct dict *d, const char *path,
     if (c->dim == 2)
         c->origin[2] = 0;
     TRY(read_regions(c));
+    for (int i = 0; i < c->nregions; i++)
+        if (c->r[i].shape == SHAPE_FILE)
+            TRY(gen_file_check(c, &c->r[i]));
     TRY(check_in_tank(c));
     TRY(mps_box(c));
     return SIM_OK;
@@ -412,6 +449,12 @@ int gen_read(struct gen_case *c, const struct dict *d, const char *path,
 
 void gen_case_free(struct gen_case *c)
 {
+    for (int i = 0; i < c->nregions; i++) {
+        free(c->r[i].file);
+        free(c->r[i].fx);
+        free(c->r[i].fr);
+        free(c->r[i].fline);
+    }
     free(c->r);
     c->r = NULL;
     c->nregions = 0;
