@@ -203,4 +203,13 @@ int dict_write_value(const struct dict_value *v, FILE *f);
  * missing sub-dictionaries). Written atomically. */
 int dict_set_in_file(const char *path, const char *keypath, const char *value);
 
+/* n edits of one file, applied in turn and written once: every keypaths[k]
+ * must then hold values[k], else nothing is written. Without allow_new a
+ * key path that is not in the file (nor in what it includes) is refused,
+ * naming the file and line of the innermost dictionary that exists and
+ * suggesting a near key ("did you mean"). */
+int dict_set_entries_in_file(const char *path, int n,
+                             const char *const *keypaths,
+                             const char *const *values, int allow_new);
+
 #endif

@@ -7,7 +7,8 @@
  * #include, a $sub merge), gets a new entry at the end of the innermost
  * dictionary of this file on its path, which overrides (last one wins).
  * The edited text is parsed again and must give the requested value before
- * the file is replaced; otherwise nothing is written.
+ * the file is replaced; otherwise nothing is written. Several edits of one
+ * file are applied in turn to the text and written once.
  */
 #include <errno.h>
 #include <libgen.h>
@@ -293,14 +294,51 @@ static int verify(const char *path, const char *text, size_t len,
     return rc;
 }
 
-int dict_set_in_file(const char *path, const char *keypath, const char *value)
+/* Without allow_new, a key path must exist: a misspelt key would silently
+ * become a new entry that nothing reads. The message names the innermost
+ * dictionary that exists and suggests one of its keys. */
+static int check_exists(const struct dict *top, char **comps, int n)
+{
+    const struct dict *cur = top;
+    int i = 0;
+    for (; i < n; i++) {
+        struct dict_entry *e = dict_lookup(cur, comps[i]);
+        if (!e)
+            break;
+        if (i == n - 1 || e->val->kind != DICT_DICT)
+            return SIM_OK; /* a non-dictionary parent: plan_edit says so */
+        cur = e->val->u.d;
+    }
+    const char *cand[256];
+    int nc = 0;
+    for (int k = 0; k < cur->n && nc < 256; k++)
+        cand[nc++] = cur->e[k].key;
+    const char *best = dict_suggest(comps[i], cand, nc);
+    char want[1024] = "", near[1024] = "", hint[1100] = "", where[512];
+    for (int k = 0; k < n; k++) {
+        size_t used = strlen(want), un = strlen(near);
+        snprintf(want + used, sizeof want - used, k ? "/%s" : "%s", comps[k]);
+        snprintf(near + un, sizeof near - un, k ? "/%s" : "%s",
+                 k == i && best ? best : comps[k]);
+    }
+    if (best)
+        snprintf(hint, sizeof hint, " (did you mean '%s'?)", near);
+    dict_where(cur, NULL, where, sizeof where);
+    return sim_error(SIM_ERR_DICT, "%s: no key '%s' to set%s; a new key "
+                     "needs -new", where, want, hint);
+}
+
+/* One edit of the text [text, text + len) of `path` into *out. */
+static int set_in_text(const char *path, const char *text, size_t len,
+                       const char *keypath, const char *value,
+                       char **out, size_t *nout)
 {
     struct dict *vd = NULL, *d = NULL;
-    char *text = NULL, *out = NULL, *kp = strdup(keypath);
+    char *kp = strdup(keypath);
     char *comps[64];
     struct edit ed = { 0 };
-    size_t len;
     int rc, n;
+    *out = NULL;
     if (!kp)
         return sim_error(SIM_ERR_NOMEM, "out of memory");
     n = split_path(kp, comps, 64);
@@ -309,33 +347,96 @@ int dict_set_in_file(const char *path, const char *keypath, const char *value)
         goto out;
     }
     TRY_GOTO(rc, check_value(keypath, value, &vd), out);
-    int err = dict_slurp(path, &text, &len);
-    if (err) {
-        rc = sim_error(SIM_ERR_IO, "cannot open '%s': %s", path,
-                       dict_strerror(err));
-        goto out;
-    }
     TRY_GOTO(rc, dict_read_string(text, len, path, &d), out);
     const struct dict_value *newv = vd->e[0].val;
     TRY_GOTO(rc, plan_edit(d, text, len, comps, n, value, newv, &ed), out);
-    size_t nw = strlen(ed.with), nout = len - ed.cut + nw;
-    out = malloc(nout + 1);
-    if (!out) {
+    size_t nw = strlen(ed.with);
+    *nout = len - ed.cut + nw;
+    *out = malloc(*nout + 1);
+    if (!*out) {
         rc = sim_error(SIM_ERR_NOMEM, "out of memory");
         goto out;
     }
-    memcpy(out, text, ed.at);
-    memcpy(out + ed.at, ed.with, nw);
-    memcpy(out + ed.at + nw, text + ed.at + ed.cut, len - ed.at - ed.cut);
-    out[nout] = '\0';
-    TRY_GOTO(rc, verify(path, out, nout, keypath, newv), out);
-    TRY_GOTO(rc, dict_write_atomic(path, out, nout, 0), out);
+    memcpy(*out, text, ed.at);
+    memcpy(*out + ed.at, ed.with, nw);
+    memcpy(*out + ed.at + nw, text + ed.at + ed.cut, len - ed.at - ed.cut);
+    (*out)[*nout] = '\0';
 out:
     free(ed.with);
-    free(out);
-    free(text);
     free(kp);
     dict_free(d);
     dict_free(vd);
     return rc;
+}
+
+int dict_set_entries_in_file(const char *path, int n,
+                             const char *const *keypaths,
+                             const char *const *values, int allow_new)
+{
+    char *text = NULL, *next = NULL;
+    size_t len, nnext = 0;
+    struct dict *d = NULL;
+    int rc = SIM_OK;
+    /* the edits are checked together at the end, where an undone one
+     * could only be reported as "overridden": say which */
+    for (int k = 0; k < n; k++)
+        for (int l = k + 1; l < n; l++) {
+            size_t m = strlen(keypaths[l]);
+            if (strncmp(keypaths[k], keypaths[l], m) == 0 &&
+                (keypaths[k][m] == '\0' || keypaths[k][m] == '/'))
+                return sim_error(SIM_ERR_INPUT, "%s: the edit of '%s' would "
+                                 "be undone by the later one of '%s'", path,
+                                 keypaths[k], keypaths[l]);
+        }
+    int err = dict_slurp(path, &text, &len);
+    if (err)
+        return sim_error(SIM_ERR_IO, "cannot open '%s': %s", path,
+                         dict_strerror(err));
+    /* every key is checked against the file as it is, so that the lines
+     * named are the file's */
+    if (!allow_new) {
+        TRY_GOTO(rc, dict_read_string(text, len, path, &d), out);
+        for (int k = 0; k < n && rc == SIM_OK; k++) {
+            char *kp = strdup(keypaths[k]), *comps[64];
+            if (!kp) {
+                rc = sim_error(SIM_ERR_NOMEM, "out of memory");
+                break;
+            }
+            int nc = split_path(kp, comps, 64);
+            rc = nc <= 0 ? sim_error(SIM_ERR_INPUT, "bad key path '%s'",
+                                     keypaths[k])
+                         : check_exists(d, comps, nc);
+            free(kp);
+        }
+        if (rc != SIM_OK)
+            goto out;
+    }
+    for (int k = 0; k < n; k++) {
+        TRY_GOTO(rc, set_in_text(path, text, len, keypaths[k], values[k],
+                                 &next, &nnext), out);
+        free(text);
+        text = next;
+        len = nnext;
+        next = NULL;
+    }
+    /* a later edit of the same key (or of a dictionary above it) would
+     * undo an earlier one: all must hold, or nothing is written */
+    for (int k = 0; k < n; k++) {
+        struct dict *vd;
+        TRY_GOTO(rc, check_value(keypaths[k], values[k], &vd), out);
+        rc = verify(path, text, len, keypaths[k], vd->e[0].val);
+        dict_free(vd);
+        if (rc != SIM_OK)
+            goto out;
+    }
+    rc = dict_write_atomic(path, text, len, 0);
+out:
+    dict_free(d);
+    free(text);
+    return rc;
+}
+
+int dict_set_in_file(const char *path, const char *keypath, const char *value)
+{
+    return dict_set_entries_in_file(path, 1, &keypath, &value, 1);
 }

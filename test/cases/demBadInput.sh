@@ -11,14 +11,19 @@ fails=0
 T="$ROOT/bin/dictTool"
 n=0
 
-# case FILE KEY=VALUE... : fresh copy with edits, particles generated
+# case FILE [+]KEY=VALUE... : fresh copy with edits, particles generated;
+# +KEY adds a key the tutorial does not have (dictTool -new)
 fresh() {
     n=$((n + 1)); c="$WORK/c$n"
     cp -r "$TUT" "$c"
-    "$T" "$c/system/controlDict" -set "endTime=0.0005" >/dev/null
-    "$T" "$c/system/controlDict" -set "deltaT=1e-5" >/dev/null
+    "$T" "$c/system/controlDict" -set "endTime=0.0005" -set "deltaT=1e-5" >/dev/null
     local f="$1"; shift
-    for kv in "$@"; do "$T" "$c/$f" -set "$kv" >/dev/null; done
+    for kv in "$@"; do
+        case "$kv" in
+            +*) "$T" "$c/$f" -new -set "${kv#+}" >/dev/null ;;
+            *)  "$T" "$c/$f" -set "$kv" >/dev/null ;;
+        esac
+    done
     (cd "$c" && "$ROOT/bin/genParticles" > log.genParticles 2>&1)
 }
 
@@ -51,11 +56,10 @@ fresh constant/demProperties "contact/rolling=constantTorque"
 expect_fail rollingNeedsCoeffs "constant/demProperties.*rollingFriction"
 fresh system/demSolution "integrator=rk4"
 expect_fail unknownIntegrator "unknown DEM integrator 'rk4'; valid: arkode verlet"
-fresh system/demSolution "integrator=verlet" "verletCoeffs/deltaT=1e-4"
+fresh system/demSolution "integrator=verlet" "+verletCoeffs/deltaT=1e-4"
 expect_fail verletAboveBound "system/demSolution:[0-9]+:[0-9]+: deltaT 0.0001 s is above the stability bound 3.613.*e-05 s"
 fresh constant/demProperties "contact/normal=linear"
-"$T" "$c/system/demSolution" -set "integrator=verlet" >/dev/null
-"$T" "$c/system/demSolution" -set "verletCoeffs/deltaT=1e-5" >/dev/null
+"$T" "$c/system/demSolution" -new -set "integrator=verlet" -set "verletCoeffs/deltaT=1e-5" >/dev/null
 expect_fail linearAboveBound "deltaT 1e-05 s is above the stability bound 5\\.[0-9]+e-06 s .*linear law"
 fresh system/demSolution "arkodeCoeffs/rtol=0"
 expect_fail rtolZero "system/demSolution:[0-9]+:[0-9]+: rtol must be > 0"
@@ -68,7 +72,7 @@ expect_fail missingGrains "0/dem.vtu"
 # steps that do not advance time (issue 14 item 5)
 fresh system/controlDict "deltaT=1e-300"
 expect_fail tinyDeltaT "system/controlDict:[0-9]+:[0-9]+: deltaT = 1e-300 is too small for times up to 0.0005 s: t \+ deltaT == t"
-fresh system/demSolution "integrator=verlet" "verletCoeffs/deltaT=1e-300"
+fresh system/demSolution "integrator=verlet" "+verletCoeffs/deltaT=1e-300"
 expect_fail tinyVerletDeltaT "system/demSolution:[0-9]+:[0-9]+: deltaT 1e-300 s is below 1e-06 of the stability bound"
 fresh system/demSolution "integrator=verlet" "verletCoeffs/rayleighFraction=1e-300"
 expect_fail tinyRayleighFraction "system/demSolution:[0-9]+:[0-9]+: rayleighFraction 1e-300 must be in \[1e-06, 1\]"
@@ -95,8 +99,8 @@ fi
 
 # a domain that the right bead is outside of: counted, and removed if asked
 for remove in no yes; do
-    fresh system/demSolution "domain/min=(0 0 0)" "domain/max=(0.021 0.01 0.02)" \
-        "domain/removeOutside=$remove"
+    fresh system/demSolution "+domain/min=(0 0 0)" "+domain/max=(0.021 0.01 0.02)" \
+        "+domain/removeOutside=$remove"
     (cd "$c" && "$ROOT/bin/demSolid" > log.demSolid 2>&1)
     left=$(awk '/grains  /{print $2}' "$c/log.demSolid" | tail -1)
     want=3; [ $remove = yes ] && want=2
@@ -109,7 +113,7 @@ for remove in no yes; do
 done
 
 # a misspelt key is warned about at its file:line
-fresh system/demSolution "arkodeCoeffs/rtoll=1e-5"
+fresh system/demSolution "+arkodeCoeffs/rtoll=1e-5"
 (cd "$c" && "$ROOT/bin/demSolid" > log.demSolid 2>&1)
 if grep -qE "system/demSolution:[0-9]+:[0-9]+: keyword 'rtoll'.*not used" "$c/log.demSolid"; then
     echo "PASS badInput misspelt key: $(grep -m1 rtoll "$c/log.demSolid")"

@@ -19,8 +19,8 @@ for integ in arkode verlet; do
         "$T" "$c/system/controlDict" -set "writeFormat=ascii" >/dev/null
         "$T" "$c/system/particleDict" -set "regions/beads/min=(0.0047 0.0055 0)" >/dev/null
         "$T" "$c/system/particleDict" -set "regions/beads/max=(0.0155 0.0163 0.0108)" >/dev/null
-        "$T" "$c/system/particleDict" -set "regions/beads/velocity=(0.1 0 0)" >/dev/null
-        "$T" "$c/system/particleDict" -set "regions/beads/omega=(0 0 30)" >/dev/null
+        "$T" "$c/system/particleDict" -new -set "regions/beads/velocity=(0.1 0 0)" \
+            -set "regions/beads/omega=(0 0 30)" >/dev/null
         "$T" "$c/system/controlDict" -set "endTime=0.06" >/dev/null
         (cd "$c" && "$ROOT/bin/genParticles" > log.genParticles 2>&1) || fails=$((fails+1))
         if [ $kind = restarted ]; then

@@ -101,7 +101,7 @@ if [ "$changed" = 2 ] && [ "$new" = 2.5 ] \
 else
     fail set_in_place "changed lines: $changed, new value '$new'"
 fi
-"$TOOL" -case "$TMP/case" system/controlDict -set functions/probes/type=probes > /dev/null 2>&1
+"$TOOL" -case "$TMP/case" system/controlDict -new -set functions/probes/type=probes > /dev/null 2>&1
 check_out set_new_subdict "probes" "$TOOL" -case "$TMP/case" system/controlDict -entry functions/probes/type
 cp "$TMP/case/system/controlDict" "$TMP/before"
 if "$TOOL" -case "$TMP/case" system/controlDict -set 'endTime=1; x 2' > /dev/null 2> "$TMP/err"; then
@@ -111,6 +111,40 @@ elif cmp -s "$TMP/before" "$TMP/case/system/controlDict" && grep -q "FATAL ERROR
 else
     fail set_bad_value "file modified or no FATAL ERROR"
 fi
+# ---- several -set, and keys that are not in the file (issue 14 item 7) ------
+"$TOOL" -case "$TMP/case" system/controlDict -set endTime=3 -set deltaT=2e-4 > /dev/null 2> "$TMP/err"
+got="$("$TOOL" -case "$TMP/case" system/controlDict -entry endTime) $("$TOOL" -case "$TMP/case" system/controlDict -entry deltaT)"
+[ "$got" = "3 2e-4" ] && pass set_several || fail set_several "endTime deltaT = '$got', want '3 2e-4' $(grep -m1 FATAL "$TMP/err")"
+cp "$TMP/case/system/controlDict" "$TMP/before"
+# a misspelt key is refused, with a suggestion, and nothing is written even
+# for the good -set before it
+if "$TOOL" -case "$TMP/case" system/controlDict -set endTime=4 -set deltaTT=1 > /dev/null 2> "$TMP/err"; then
+    fail set_unknown_key "added a key that is not in the file"
+elif ! cmp -s "$TMP/before" "$TMP/case/system/controlDict"; then
+    fail set_unknown_key "the file changed"
+elif grep -q "system/controlDict:[0-9]*:[0-9]*: no key 'deltaTT' to set (did you mean 'deltaT'?); a new key needs -new" "$TMP/err"; then
+    pass set_unknown_key
+else
+    fail set_unknown_key "$(grep -m1 . "$TMP/err")"
+fi
+if "$TOOL" -case "$TMP/case" system/controlDict -set functions/probes/typ=x > /dev/null 2> "$TMP/err"; then
+    fail set_unknown_subkey "added a key that is not in the file"
+elif grep -q "system/controlDict:[0-9]*:[0-9]*: no key 'functions/probes/typ' to set (did you mean 'functions/probes/type'?)" "$TMP/err"; then
+    pass set_unknown_subkey
+else
+    fail set_unknown_subkey "$(grep -m1 . "$TMP/err")"
+fi
+"$TOOL" -case "$TMP/case" system/controlDict -new -set writeInterval=0.1 -set endTime=5 > /dev/null 2> "$TMP/err"
+got="$("$TOOL" -case "$TMP/case" system/controlDict -entry writeInterval 2>&1) $("$TOOL" -case "$TMP/case" system/controlDict -entry endTime 2>&1)"
+[ "$got" = "0.1 5" ] && pass set_new_key || fail set_new_key "writeInterval endTime = '$got', want '0.1 5'"
+if "$TOOL" -case "$TMP/case" system/controlDict -new -set endTime=6 -set endTime=7 > /dev/null 2> "$TMP/err"; then
+    fail set_twice "accepted two values for one key"
+elif grep -q "the edit of 'endTime' would be undone by the later one of 'endTime'" "$TMP/err"; then
+    pass set_twice
+else
+    fail set_twice "$(grep -m1 . "$TMP/err")"
+fi
+
 if "$TOOL" -case "$TMP/case" system/missingDict > /dev/null 2> "$TMP/err"; then
     fail missing_file "exit status 0"
 elif grep -q "cannot open 'system/missingDict': No such file or directory" "$TMP/err"; then

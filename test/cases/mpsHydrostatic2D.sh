@@ -27,8 +27,7 @@ for b in mpsFluid genParticles vtuInfo dictTool; do
     [ -x "$ROOT/bin/$b" ] || { fail mpsHydrostatic2D "bin/$b not built"; exit 1; }
 done
 setcase() { rm -rf "$TMP/$1"; cp -r "$TUT" "$TMP/$1"; c="$TMP/$1"; }
-set_entry() { "$ROOT/bin/dictTool" -case "$c" -set "$2" "$3" "$1" >/dev/null 2>&1 \
-              || sed -i "s|^\($2\) .*|\1 $3;|" "$c/$1"; }
+set_entry() { "$ROOT/bin/dictTool" -case "$c" "$1" -set "$2=$3" >/dev/null; }
 
 # --- accuracy --------------------------------------------------------------
 setcase run

@@ -5,8 +5,10 @@
  * hang or leak. Whatever parses is expanded, parsed again and expanded
  * again: the two texts must be equal (dict_write_expanded's promise), and
  * the getters are exercised on the first entries with every type. Then
- * dict_set_in_file edits a copy of the input (in /dev/shm): it must either
- * fail with a message or leave a file whose entry reads back as the value.
+ * dict_set_entries_in_file edits a copy of the input (in /dev/shm), with
+ * and without allowing new keys: it must either fail with a message and
+ * leave the file as it was, or leave a file whose entry reads back as the
+ * value.
  * Build and run with test/fuzz/run.
  */
 #include <stdint.h>
@@ -99,6 +101,22 @@ static const char *work_file(void)
     return path;
 }
 
+/* A refused edit leaves the file as it was. */
+static void unchanged(const char *path, const uint8_t *data, size_t size)
+{
+    FILE *f = fopen(path, "rb");
+    if (!f)
+        abort();
+    uint8_t *back = malloc(size + 1);
+    size_t got = back ? fread(back, 1, size + 1, f) : 0;
+    fclose(f);
+    if (!back || got != size || memcmp(back, data, size) != 0) {
+        fprintf(stderr, "a refused edit changed the file\n");
+        abort();
+    }
+    free(back);
+}
+
 static void check_set(const uint8_t *data, size_t size, const struct dict *d)
 {
     static const char *const values[] = { "42", "(1 2 3)", "{ x 1; }",
@@ -122,10 +140,14 @@ static void check_set(const uint8_t *data, size_t size, const struct dict *d)
         abort();
     fwrite(data, 1, size, f);
     fclose(f);
-    if (dict_set_in_file(path, key, value) != SIM_OK) {
+    /* every other input without -new: an absent key is then refused */
+    int allow_new = (size / 15) % 2 == 0;
+    const char *keys[1] = { key }, *vals[1] = { value };
+    if (dict_set_entries_in_file(path, 1, keys, vals, allow_new) != SIM_OK) {
         if (sim_error_message()[0] == '\0')
             abort();
         sim_error_clear();
+        unchanged(path, data, size);
         return;
     }
     struct dict *e;

@@ -6,7 +6,8 @@
  *   dictTool [-case DIR] FILE                 print FILE expanded
  *   dictTool FILE -entry a/b/c                print the value of a/b/c
  *   dictTool FILE -keys [-entry a/b]          list the keys (of a/b)
- *   dictTool FILE -set a/b/c=value            edit the file in place
+ *   dictTool FILE -set a/b/c=value [-set ...] edit the file in place
+ *   dictTool FILE -new -set a/b/c=value       ... adding keys that are new
  *   dictTool FILE -check KEY:TYPE ...         read keys as a program would,
  *                                             then warn about unused ones
  *
@@ -14,6 +15,10 @@
  * dims:E1,...,E7 (a scalar with that dimension set), word:a,b,c (one of
  * these words) and model:a,b,c (selection through model_select); scalar?,
  * label?, bool?, string? and dict? read an optional key (with a default).
+ *
+ * Every -set is applied, in order, and the file written once. A key that
+ * is not in the file is refused ("did you mean") unless -new is given: a
+ * misspelt key must not become an entry nothing reads.
  *
  * FILE is relative to the case directory. Errors print a FATAL ERROR with
  * the file and line on stderr and exit 1; the file is never modified then.
@@ -30,25 +35,35 @@
 #include "core/select.h"
 
 #define MAX_CHECKS 64
+#define MAX_SETS 64
 #define MAX_NAMES 32
 
 struct options {
-    const char *case_dir, *file, *entry, *set;
-    int expand, keys;
+    const char *case_dir, *file, *entry;
+    int expand, keys, add_new;
     const char *checks[MAX_CHECKS];
     int nchecks;
+    const char *sets[MAX_SETS];
+    int nsets;
 };
 
 static void usage(FILE *f)
 {
     fprintf(f, "Usage: dictTool [-case DIR] FILE [-entry a/b/c] "
-               "[-set a/b/c=value] [-expand] [-keys] [-check KEY:TYPE]...\n"
+               "[-set a/b/c=value]... [-new] [-expand] [-keys] "
+               "[-check KEY:TYPE]...\n"
                "  -entry KEY    print the value of KEY (scoped a/b/c)\n"
                "  -keys         list the keys (of -entry's dictionary)\n"
                "  -expand       print the file with #include and $var "
                "resolved\n"
                "  -set KEY=VAL  replace the value of KEY in FILE, keeping "
-               "comments\n"
+               "comments;\n"
+               "                may be repeated (applied in order, written "
+               "once); a KEY\n"
+               "                that is not in FILE is refused\n"
+               "  -new          let -set add keys that are not in FILE "
+               "(creating the\n"
+               "                dictionaries on their path)\n"
                "  -check K:T    read K as type T (scalar label bool string "
                "dict list\n"
                "                vector:N dims:E1,..,E7 word:a,b model:a,b), "
@@ -76,7 +91,11 @@ static int parse_args(int argc, char **argv, struct options *o)
         } else if (strcmp(a, "-entry") == 0 && more) {
             o->entry = argv[++i];
         } else if (strcmp(a, "-set") == 0 && more) {
-            o->set = argv[++i];
+            if (o->nsets == MAX_SETS)
+                return sim_error(SIM_ERR_INPUT, "too many -set options");
+            o->sets[o->nsets++] = argv[++i];
+        } else if (strcmp(a, "-new") == 0) {
+            o->add_new = 1;
         } else if (strcmp(a, "-check") == 0 && more) {
             if (o->nchecks == MAX_CHECKS)
                 return sim_error(SIM_ERR_INPUT, "too many -check options");
@@ -97,6 +116,9 @@ static int parse_args(int argc, char **argv, struct options *o)
     }
     if (!o->file)
         return sim_error(SIM_ERR_INPUT, "no FILE given (see dictTool -help)");
+    if (o->add_new && !o->nsets)
+        return sim_error(SIM_ERR_INPUT, "-new is for -set (see dictTool "
+                         "-help)");
     return SIM_OK;
 }
 
@@ -265,15 +287,21 @@ static int run(const struct options *o)
     if (o->case_dir && chdir(o->case_dir) != 0)
         return sim_error(SIM_ERR_IO, "cannot use case directory '%s': %s",
                          o->case_dir, strerror(errno));
-    if (o->set) {
-        char buf[4096];
-        snprintf(buf, sizeof buf, "%s", o->set);
-        char *eq = strchr(buf, '=');
-        if (!eq || eq == buf)
-            return sim_error(SIM_ERR_INPUT, "-set '%s': expected KEY=VALUE",
-                             o->set);
-        *eq = '\0';
-        return dict_set_in_file(o->file, buf, eq + 1);
+    if (o->nsets) {
+        static char buf[MAX_SETS][4096];
+        const char *keys[MAX_SETS], *values[MAX_SETS];
+        for (int k = 0; k < o->nsets; k++) {
+            snprintf(buf[k], sizeof buf[k], "%s", o->sets[k]);
+            char *eq = strchr(buf[k], '=');
+            if (!eq || eq == buf[k])
+                return sim_error(SIM_ERR_INPUT, "-set '%s': expected "
+                                 "KEY=VALUE", o->sets[k]);
+            *eq = '\0';
+            keys[k] = buf[k];
+            values[k] = eq + 1;
+        }
+        return dict_set_entries_in_file(o->file, o->nsets, keys, values,
+                                        o->add_new);
     }
     struct dict *d;
     TRY(dict_read(o->file, &d));
