@@ -599,6 +599,22 @@ static int dem_side_wrong_dt(void *arg)
     return rc == SIM_ERR_PEER ? 0 : 1;
 }
 
+/* The end of a test whose pair was refused: the DEM child saw the
+ * refusal it expected, the segment is gone, everything freed. */
+static void end_refused(pid_t pid, const char *name, struct couple_fluid *cf,
+                        struct mps_solver *s, struct dict *cdd)
+{
+    int status;
+    assert_int_equal(waitpid(pid, &status, 0), pid);
+    assert_true(WIFEXITED(status) && WEXITSTATUS(status) == 0);
+    char path[128];
+    snprintf(path, sizeof path, "/dev/shm/%s", name);
+    assert_int_equal(access(path, F_OK), -1);   /* nothing left behind */
+    couple_fluid_free(cf);
+    mps_solver_free(s);
+    dict_free(cdd);
+}
+
 static void test_channel_wrong_interval(void **st)
 {
     (void)st;
@@ -621,15 +637,7 @@ static void test_channel_wrong_interval(void **st)
     assert_int_equal(rc, SIM_ERR_INPUT);
     assert_non_null(strstr(sim_error_message(), "controlDict"));
     couple_fluid_close(&cf, rc);
-    int status;
-    assert_int_equal(waitpid(pid, &status, 0), pid);
-    assert_true(WIFEXITED(status) && WEXITSTATUS(status) == 0);
-    char path[128];
-    snprintf(path, sizeof path, "/dev/shm/%s", name);
-    assert_int_equal(access(path, F_OK), -1);   /* nothing left behind */
-    couple_fluid_free(&cf);
-    mps_solver_free(&s);
-    dict_free(cdd);
+    end_refused(pid, name, &cf, &s, cdd);
 }
 
 /* Different endTimes are refused at the handshake by both programs,
@@ -671,15 +679,7 @@ static void test_channel_wrong_end_time(void **st)
     assert_non_null(strstr(sim_error_message(), "endTime"));
     assert_non_null(strstr(sim_error_message(), "mpsFluid has '0.015'"));
     assert_non_null(strstr(sim_error_message(), "has '0.03'"));
-    int status;
-    assert_int_equal(waitpid(pid, &status, 0), pid);
-    assert_true(WIFEXITED(status) && WEXITSTATUS(status) == 0);
-    char path[128];
-    snprintf(path, sizeof path, "/dev/shm/%s", name);
-    assert_int_equal(access(path, F_OK), -1);   /* nothing left behind */
-    couple_fluid_free(&cf);
-    mps_solver_free(&s);
-    dict_free(cdd);
+    end_refused(pid, name, &cf, &s, cdd);
 }
 
 int main(void)
