@@ -153,6 +153,16 @@ int app_read_dict(const struct app *a, const char *rel, struct dict **out)
     return dict_read(path, out);
 }
 
+int app_read_dict_optional(const struct app *a, const char *rel,
+                           struct dict **out)
+{
+    char path[4200];
+    *out = NULL;
+    if (access(app_path(a, rel, path, sizeof path), F_OK) != 0)
+        return SIM_OK;
+    return app_read_dict(a, rel, out);
+}
+
 int app_lock_case(const struct app *a)
 {
     char rel[256], path[4400];

@@ -65,6 +65,11 @@ const char *app_path(const struct app *a, const char *rel, char *buf,
 /* Read a case dictionary, e.g. "system/controlDict". */
 int app_read_dict(const struct app *a, const char *rel, struct dict **out);
 
+/* The same for a dictionary a case may leave out (system/couplingDict):
+ * *out = NULL and SIM_OK when the file does not exist. */
+int app_read_dict_optional(const struct app *a, const char *rel,
+                           struct dict **out);
+
 /* Print the FATAL ERROR block (message, traceback) to stdout and stderr and
  * exit(1). */
 void app_fatal(const struct app *a, int rc) __attribute__((noreturn));

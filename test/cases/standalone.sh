@@ -1,12 +1,12 @@
 #!/bin/bash
 # standalone.sh — the repository stands alone: a clone with nothing beside
 # it has everything its code, tests, tutorials and notes read or cite.
-#   standalone_reads  no tracked file outside Markdown reads ../shared or a
-#                     shared/data folder (reference data live in data/)
-#   standalone_cites  no tracked file cites the project's planning notes
-#                     that are not part of the repository (METHODS.md,
-#                     DESIGN.md, STYLE.md, toolchain.md); the theory and
-#                     design notes are doc/theory.md and doc/design.md
+#   standalone_reads  no tracked file outside Markdown reads a data folder
+#                     beside the clone (reference data live in data/)
+#   standalone_cites  no tracked file cites the founders' planning notes,
+#                     which are not part of the repository (the names in
+#                     the pattern below); the theory and design notes are
+#                     doc/theory.md, doc/design.md and doc/libraries.md
 #   standalone_data   every folder of data/ has a README.md
 ROOT="$(cd "$(dirname "$0")/../.." && pwd)"
 fails=0

@@ -58,22 +58,13 @@ struct solid {
     int dim;
 };
 
-static int read_optional(struct solid *s, const char *rel, struct dict **out)
-{
-    char path[4200];
-    *out = NULL;
-    if (access(app_path(&s->app, rel, path, sizeof path), F_OK) != 0)
-        return SIM_OK;
-    return app_read_dict(&s->app, rel, out);
-}
-
 /* controlDict, and system/couplingDict if there is one: a coupled run
  * restarts (startFrom latestTime) only from a time that holds both
  * clouds. */
 static int create_time(struct solid *s)
 {
     TRY(app_read_dict(&s->app, "system/controlDict", &s->control));
-    TRY(read_optional(s, "system/couplingDict", &s->coupling));
+    TRY(app_read_dict_optional(&s->app, "system/couplingDict", &s->coupling));
     TRY(couple_enabled(s->coupling, &s->coupled));
     static const char *const alone[] = { "dem.vtu", NULL };
     static const char *const both[] = { "dem.vtu", "fluid.vtu", NULL };
@@ -87,7 +78,7 @@ static int create_grains(struct solid *s)
     char rel[256], path[4200];
     TRY(app_read_dict(&s->app, "constant/demProperties", &s->props));
     TRY(dem_read_properties(s->props, d));
-    TRY(read_optional(s, "system/particleDict", &s->particles));
+    TRY(app_read_dict_optional(&s->app, "system/particleDict", &s->particles));
     s->dim = 3;
     if (s->particles)
         TRY(dem_read_walls(s->particles, d, &s->dim));

@@ -69,11 +69,9 @@ struct fluid {
  * clouds. */
 static int create_time(struct fluid *f)
 {
-    char path[4200];
     TRY(app_read_dict(&f->app, "system/controlDict", &f->control));
-    if (access(app_path(&f->app, "system/couplingDict", path, sizeof path),
-               F_OK) == 0)
-        TRY(app_read_dict(&f->app, "system/couplingDict", &f->coupling));
+    TRY(app_read_dict_optional(&f->app, "system/couplingDict",
+                               &f->coupling));
     TRY(couple_enabled(f->coupling, &f->coupled));
     static const char *const alone[] = { "fluid.vtu", NULL };
     static const char *const both[] = { "fluid.vtu", "dem.vtu", NULL };

@@ -52,16 +52,15 @@ static int site_porosity(const struct app *a, const struct gen_case *c,
     struct coupling_settings cs;
     struct coupling_pairs pairs;
     struct dict *cd;
-    char path[4096];
     double *Vg;
     int rc;
 
-    if (access(app_path(a, "system/couplingDict", path, sizeof path), R_OK))
+    TRY(app_read_dict_optional(a, "system/couplingDict", &cd));
+    if (!cd)
         return dict_error(asker->d, "grainVolume", SIM_ERR_DICT,
                           "region '%s': grainVolume scale needs "
                           "system/couplingDict (its kernelRadius and "
                           "porosityMin define the porosity)", asker->name);
-    TRY(app_read_dict(a, "system/couplingDict", &cd));
     rc = coupling_settings_read(cd, &cs);
     dict_free(cd);
     TRY(rc);
