@@ -5,6 +5,7 @@
 #include <string.h>
 
 #include "core/dict.h"
+#include "core/dict_impl.h"
 #include "core/error.h"
 #include "core/log.h"
 
@@ -35,8 +36,19 @@ int model_select(const struct dict *d, const char *key, const char *category,
             const struct model_head *m = table[i];
             used += snprintf(valid + used, sizeof valid - used, " %s", m->name);
         }
+        const char *cand[64];
+        int nc = 0;
+        while (nc < 64 && table[nc]) {
+            cand[nc] = ((const struct model_head *)table[nc])->name;
+            nc++;
+        }
+        const char *best = dict_suggest(name, cand, nc);
+        char hint[128] = "";
+        if (best)
+            snprintf(hint, sizeof hint, " (did you mean '%s'?)", best);
         return dict_error(d, key, SIM_ERR_DICT,
-                          "unknown %s '%s'; valid:%s", category, name, valid);
+                          "unknown %s '%s'; valid:%s%s", category, name,
+                          valid, hint);
     }
     if (h->reference && h->reference[0])
         log_info("Selecting %s %s (%s)", category, h->name, h->reference);

@@ -25,6 +25,10 @@ void dem_free(struct dem *d)
     free(d->inv_m); free(d->inv_i); free(d->group); free(d->id);
     free(d->acc); free(d->alpha);
     free(d->walls);
+    if (d->motions)
+        for (int k = 0; k < DEM_MAX_PATCHES; k++)
+            wall_motion_free(&d->motions[k]);
+    free(d->motions);
     nlist_free(&d->nl);
     free(d->hist); free(d->whist); free(d->pair_c); free(d->wall_chi);
     free(d->wstart); free(d->wlist);
@@ -64,17 +68,28 @@ int dem_resize(struct dem *d, size_t n)
     return SIM_OK;
 }
 
+void dem_walls_at(struct dem *d, double t)
+{
+    for (int w = 0; w < d->nwalls; w++)
+        if (d->walls[w].motion >= 0)
+            wall_place(&d->walls[w], &d->motions[d->walls[w].motion], t);
+}
+
 /* Walls within reach of each grain (distance < R + skin), valid as long as
  * the neighbour list is: the force loop then skips the far walls, as
- * LIGGGHTS' wall neighbour lists do. */
+ * LIGGGHTS' wall neighbour lists do. A moving wall is listed for every
+ * grain: the list's skin bounds the grains' travel, not the wall's. */
 static int wall_candidates(struct dem *d)
 {
     size_t k = 0;
     d->wstart[0] = 0;
     for (size_t i = 0; i < d->n; i++) {
         for (int w = 0; w < d->nwalls; w++) {
-            if (wall_distance(&d->walls[w], &d->x[3 * i])
-                >= d->r[i] + d->nl.skin)
+            const struct dem_wall *wa = &d->walls[w];
+            int moves = wa->motion >= 0 && !wa->removed
+                        && wall_motion_moves(&d->motions[wa->motion]);
+            if (!moves && wall_distance(wa, &d->x[3 * i])
+                              >= d->r[i] + d->nl.skin)
                 continue;
             if (k == d->wlist_cap) {
                 size_t cap = d->wlist_cap ? 2 * d->wlist_cap : 1024;
@@ -164,6 +179,7 @@ int dem_setup(struct dem *d)
     }
     if (d->nl.skin <= 0)
         d->nl.skin = 0.2 * d->rmax;   /* decision: 10 % of a diameter */
+    dem_walls_at(d, d->t);
     TRY(nlist_build(&d->nl, d->n, d->x, d->r));
     d->stats.rebuilds++;
     TRY(reserve_histories(d));

@@ -70,6 +70,7 @@ struct dem {
     struct contact_law law;
     struct dem_wall *walls;
     int nwalls;
+    struct wall_motion *motions;  /* per patch (DEM_MAX_PATCHES), or NULL */
     int npatches;
     char patch_names[DEM_MAX_PATCHES][64];
     double patch_force[3 * DEM_MAX_PATCHES]; /* force ON each patch [N]    */
@@ -138,6 +139,11 @@ int dem_setup(struct dem *d);
 int dem_forces(struct dem *d, double t, const double *x, const double *v,
                const double *w, double tau, int commit, double *acc,
                double *alpha);
+
+/* Put the moving and removed walls where their motions have them at time
+ * t (position, velocity, removal). dem_forces does it at its time, and
+ * dem_setup at d->t. */
+void dem_walls_at(struct dem *d, double t);
 
 /* Rebuild the neighbour list if x moved more than skin/2 since the last
  * build; histories follow their pairs. Returns SIM_OK. */

@@ -33,9 +33,12 @@ int dem_read_solution(const struct dict *sol, struct dem *d,
                       struct dem_solution *s);
 
 /* Walls from the regions of system/particleDict: tankWall (grains inside,
- * open faces skipped) and wall (grains outside). Patch index = region
- * index, as in constant/particlePatches. Sets *dim. */
-int dem_read_walls(const struct dict *pd, struct dem *d, int *dim);
+ * open faces skipped) and wall (grains outside), with their motion and
+ * removeAt (particles/motion/motion.h; a motion table is found relative
+ * to case_dir). Patch index = region index, as in
+ * constant/particlePatches. Sets *dim. */
+int dem_read_walls(const struct dict *pd, const char *case_dir,
+                   struct dem *d, int *dim);
 
 /* Grains from a dem.vtu (fields radius, velocity, omega, group, id). */
 int dem_read_grains(const char *path, struct dem *d);

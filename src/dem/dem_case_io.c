@@ -75,14 +75,23 @@ static int read_open(const struct dict *r, unsigned *open)
     return SIM_OK;
 }
 
+/* A wall of solid g; motion: index of its motion, or -1. */
+static void add_solid(struct dem *d, const struct geom *g, int inside,
+                      int patch, int motion)
+{
+    struct dem_wall *w = &d->walls[d->nwalls++];
+    memset(w, 0, sizeof *w);
+    w->g = w->g0 = *g;
+    w->inside = inside, w->patch = patch, w->motion = motion;
+}
+
 static int add_tank(struct dem *d, const struct dict *r, int dim,
-                    const struct geom *g, int patch)
+                    const struct geom *g, int patch, int motion)
 {
     unsigned open;
     TRY(read_open(r, &open));
     if (g->shape != GEOM_BOX) {
-        struct dem_wall *w = &d->walls[d->nwalls++];
-        w->g = *g, w->inside = 1, w->patch = patch;
+        add_solid(d, g, 1, patch, motion);
         return SIM_OK;
     }
     for (int a = 0; a < dim; a++)
@@ -92,7 +101,8 @@ static int add_tank(struct dem *d, const struct dict *r, int dim,
             double p[3] = {0, 0, 0}, u[3] = {0, 0, 0};
             p[a] = side ? g->hi[a] : g->lo[a];
             u[a] = side ? -1.0 : 1.0;
-            TRY(wall_plane(&d->walls[d->nwalls++], dim, p, u, patch));
+            TRY(wall_plane(&d->walls[d->nwalls], dim, p, u, patch));
+            d->walls[d->nwalls++].motion = motion;
         }
     if (!d->have_domain) {
         /* a grain beyond the tank by two diameters has tunnelled out */
@@ -108,7 +118,7 @@ static int add_tank(struct dem *d, const struct dict *r, int dim,
 }
 
 static int add_region(struct dem *d, const char *name, const struct dict *r,
-                      int dim)
+                      int dim, const char *case_dir)
 {
     int patch = d->npatches;
     if (patch >= DEM_MAX_PATCHES || d->nwalls + 6 > MAX_WALLS)
@@ -118,18 +128,22 @@ static int add_region(struct dem *d, const char *name, const struct dict *r,
     d->npatches++;
     const char *type;
     TRY(dict_get_string(r, "type", &type));
-    if (strcmp(type, "tankWall") && strcmp(type, "wall"))
+    int is_wall = !strcmp(type, "tankWall") || !strcmp(type, "wall");
+    struct wall_motion *m = &d->motions[patch];
+    TRY(wall_motion_read(r, is_wall, dim, case_dir, m));
+    if (!is_wall)
         return SIM_OK;  /* fluid and grains regions make no walls */
+    int motion = wall_motion_moves(m) || isfinite(m->remove_at) ? patch : -1;
     struct geom g;
     TRY(read_shape(r, dim, &g));
     if (strcmp(type, "tankWall") == 0)
-        return add_tank(d, r, dim, &g, patch);
-    struct dem_wall *w = &d->walls[d->nwalls++];
-    w->g = g, w->inside = 0, w->patch = patch;
+        return add_tank(d, r, dim, &g, patch, motion);
+    add_solid(d, &g, 0, patch, motion);
     return SIM_OK;
 }
 
-int dem_read_walls(const struct dict *pd, struct dem *d, int *dim)
+int dem_read_walls(const struct dict *pd, const char *case_dir,
+                   struct dem *d, int *dim)
 {
     long dl;
     TRY(dict_get_label_or(pd, "dimension", 3, &dl));
@@ -138,6 +152,15 @@ int dem_read_walls(const struct dict *pd, struct dem *d, int *dim)
     d->walls = sim_calloc(MAX_WALLS, sizeof *d->walls);
     if (!d->walls)
         return SIM_ERR_NOMEM;
+    if (d->motions)
+        for (int k = 0; k < DEM_MAX_PATCHES; k++)
+            wall_motion_free(&d->motions[k]);
+    free(d->motions);
+    d->motions = sim_calloc(DEM_MAX_PATCHES, sizeof *d->motions);
+    if (!d->motions)
+        return SIM_ERR_NOMEM;
+    for (int k = 0; k < DEM_MAX_PATCHES; k++)
+        wall_motion_init(&d->motions[k]);
     d->nwalls = 0;
     d->npatches = 0;
     if (dict_is_dict(pd, "regions")) {
@@ -146,7 +169,7 @@ int dem_read_walls(const struct dict *pd, struct dem *d, int *dim)
         for (int i = 0; i < dict_size(rd); i++) {
             const struct dict *r;
             TRY(dict_get_dict(rd, dict_key_at(rd, i), &r));
-            TRY(add_region(d, dict_key_at(rd, i), r, *dim));
+            TRY(add_region(d, dict_key_at(rd, i), r, *dim, case_dir));
         }
         return SIM_OK;
     }
@@ -159,7 +182,7 @@ int dem_read_walls(const struct dict *pd, struct dem *d, int *dim)
         if (dict_value_kind(v) != DICT_DICT)
             return dict_value_error(v, SIM_ERR_DICT, "region '%s' needs "
                                     "a { ... }", name);
-        TRY(add_region(d, name, dict_value_dict(v), *dim));
+        TRY(add_region(d, name, dict_value_dict(v), *dim, case_dir));
     }
     return SIM_OK;
 }

@@ -141,7 +141,10 @@ static void wall_row(struct dem *d, size_t i, const double *x, const double *v,
         g.rstar = d->r[i];
         g.mstar = d->m[i];
         g.chi = d->wall_chi[i];
-        fill_kinematics(&g, &v[3 * i], &w[3 * i], d->r[i], NULL, NULL, 0);
+        /* a wall in rigid translation: its velocity is that of the
+         * contact point */
+        fill_kinematics(&g, &v[3 * i], &w[3 * i], d->r[i],
+                        d->walls[wl].vel, NULL, 0);
         struct contact_result res;
         double hn[3];
         if (fused)
@@ -204,7 +207,8 @@ int dem_forces(struct dem *d, double tm, const double *x, const double *v,
                const double *w, double tau, int commit, double *acc,
                double *alpha)
 {
-    (void)tm;
+    if (d->motions)
+        dem_walls_at(d, tm);
     /* Small systems run on one thread: a parallel region costs more than
      * the work (and much more on a loaded machine). */
     int nth = n_small(d) ? 1 : omp_get_max_threads();

@@ -12,7 +12,8 @@
  *                     first step
  *
  * Particles (structure of arrays; vectors interleaved x y z, z = 0 in 2-D):
- * type 0 fluid, 1 wall (in the PPE, never moves), 2 dummy (number density
+ * type 0 fluid, 1 wall (in the PPE; moves only with its patch's
+ * prescribed motion), 2 dummy (number density
  * and neighbour sums only; pressure copied from the nearest wall particle,
  * doc/theory.md A.9). Particles are renumbered in cell order every
  * `renumberInterval` steps; `id` follows each particle.
@@ -22,6 +23,14 @@
  * `corr_scale` (per-particle factors of the PPE source and of the pressure
  * correction) are NULL for a single-phase case and are then neither read
  * nor allocated. Every operator takes inv_eps.
+ *
+ * Moving and removed walls (settings wall_motion, one per patch, from the
+ * regions of system/particleDict): at the start of each step the wall and
+ * dummy particles of a removed patch are deleted, and those of a moving
+ * patch get the velocity (d(t + dt) - d(t))/dt, which the viscous term
+ * (no-slip) and the PPE's divergence see; at its end they are moved by
+ * d(t + dt) - d(t). Positions follow the prescribed displacement to
+ * round-off, whatever dt (walls.c).
  */
 #ifndef MPSDEM_MPS_MPS_H
 #define MPSDEM_MPS_MPS_H
@@ -29,6 +38,7 @@
 #include <stdint.h>
 
 #include "linsolve/linsolve.h"
+#include "particles/motion/motion.h"
 #include "mps/operators.h"
 #include "particles/cells.h"
 #include "particles/neighbour.h"
@@ -104,6 +114,10 @@ struct mps_settings {
                                     /* moved more than skin/2           */
     /* system/mpsSolution */
     double max_escape_fraction;     /* stop when more have escaped      */
+    /* system/particleDict (set by the application): motion and removal
+     * of each wall patch, borrowed; NULL: every wall fixed             */
+    const struct wall_motion *wall_motion;
+    int n_wall_motion;              /* entries (patches)                */
     /* system/couplingDict (set by the coupling) */
     double phi_relax_time;          /* volumeFractionRelaxation [s]: 0 =
                                        phi fixed (volume_exchange.c)    */
@@ -140,6 +154,12 @@ struct mps_solver {
     long n_escaped;                 /* removed so far                    */
     int n_fluid0;                   /* fluid particles at start          */
     long step;
+    double time;                    /* [s] of the state: the caller sets
+                                       it after init (the start time);
+                                       mps_step advances it            */
+    int walls_move;                 /* some patch moves or is removed   */
+    double *wall_dx;                /* 3 per patch: this step's
+                                       displacement (walls.c)           */
     /* per-step work (capacity cap) */
     struct cell_grid grid;
     struct neighbour_list nl;

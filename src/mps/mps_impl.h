@@ -26,8 +26,15 @@ int mps_ppe_solve(struct mps_solver *s, double dt);
 /* Dummy pressure from the partner wall particle (or 0). */
 void mps_dummy_pressure(struct mps_solver *s);
 
-/* Nearest wall particle of every dummy (walls never move). */
+/* Nearest wall particle of every dummy; where a patch moves or is
+ * removed, only within the dummy's own patch (walls.c). */
 int mps_find_partners(struct mps_solver *s);
+
+/* Moving and removed walls (walls.c): at the start of a step of size dt
+ * from s->time, delete removed patches and set the velocity of moving
+ * ones; after the fluid moved, move the walls. */
+int mps_walls_begin_step(struct mps_solver *s, double dt);
+void mps_walls_move(struct mps_solver *s);
 
 /* Wall particles with too few wall/dummy layers behind them for r_e. */
 int mps_thin_walls(const struct mps_solver *s);

@@ -189,6 +189,15 @@ int mps_solver_init(struct mps_solver *s, struct mps_particles *P,
              S->re_lap, s->Ll.n0, s->Ll.lambda / (dp * dp));
     for (int i = 0; i < s->P.n; i++)
         s->n_fluid0 += s->P.type[i] == MPS_FLUID;
+    for (int k = 0; k < S->n_wall_motion && S->wall_motion; k++)
+        s->walls_move |= wall_motion_moves(&S->wall_motion[k])
+                         || isfinite(S->wall_motion[k].remove_at);
+    if (s->walls_move) {
+        s->wall_dx = sim_calloc(3 * (size_t)S->n_wall_motion,
+                                sizeof *s->wall_dx);
+        if (!s->wall_dx)
+            return SIM_ERR_NOMEM;
+    }
     TRY(mps_check_extent(&s->P, S, dp, NULL));
     box_of(&s->P, s->re_max, s->box_lo, s->box_hi);
     TRY(alloc_work(s));
@@ -226,6 +235,7 @@ void mps_solver_free(struct mps_solver *s)
     free(s->cell_wet); free(s->scratch);
     free(s->perm); free(s->inv); free(s->unk); free(s->b); free(s->sol);
     free(s->A.rowptr); free(s->A.col); free(s->A.val); free(s->x_ref);
+    free(s->wall_dx);
     linsolve_free(s->ls);
     memset(s, 0, sizeof *s);
 }
@@ -271,8 +281,8 @@ static int list_still_valid(const struct mps_solver *s)
                     + s->S.g[2] * s->S.g[2]);
 #pragma omp parallel for reduction(max : m, um)
     for (int i = 0; i < P->n; i++) {
-        if (P->type[i] != MPS_FLUID)
-            continue;
+        if (P->type[i] != MPS_FLUID && !s->walls_move)
+            continue;   /* fixed walls stay where the list saw them */
         double d = 0, u = 0;
         for (int q = 0; q < 3; q++) {
             d += pow(P->x[3 * i + q] - s->x_ref[3 * i + q], 2);

@@ -13,8 +13,10 @@
  *  10. correction    u^{m+1} = u* - (dt/rho) <grad P^{m+1}>       eq. (8)
  *  11. r^{m+1} = r^m + dt u^{m+1}   [optional shifting]
  *
- * Wall and dummy particles keep u = 0 (fixed, no-slip walls, A.9). The
- * coupling hooks inv_eps and f_ext are used when non-NULL.
+ * Wall and dummy particles keep their velocity: 0 (fixed, no-slip walls,
+ * A.9), or that of their patch's prescribed motion, set with the removal
+ * of removed patches before step 1 and followed by the move after step 11
+ * (walls.c). The coupling hooks inv_eps and f_ext are used when non-NULL.
  */
 #include <math.h>
 #include <omp.h>
@@ -100,7 +102,7 @@ static void correct(struct mps_solver *s, double dt)
         for (int q = 0; q < 3; q++)
             P->u[3 * i + q] = P->type[i] == MPS_FLUID
                             ? s->ustar[3 * i + q] - c * s->grad[3 * i + q]
-                            : 0.0;
+                            : P->u[3 * i + q];
     }
 }
 
@@ -112,6 +114,7 @@ static void move(struct mps_solver *s, double dt)
         if (P->type[i] == MPS_FLUID)
             for (int q = 0; q < 3; q++)
                 P->x[3 * i + q] += dt * P->u[3 * i + q];
+    mps_walls_move(s);
 }
 
 int mps_step(struct mps_solver *s, double dt)
@@ -119,6 +122,7 @@ int mps_step(struct mps_solver *s, double dt)
     double t0 = omp_get_wtime();
     TRY(mps_check_finite(s));     /* state handed in from outside */
     s->dt_last = dt;
+    TRY(mps_walls_begin_step(s, dt));
     TRY(mps_neighbours(s));
     double t1 = omp_get_wtime();
     mps_volume_exchange(s, dt);
@@ -145,5 +149,6 @@ int mps_step(struct mps_solver *s, double dt)
     s->t.correction += t4 - t3;
     s->t.steps++;
     s->step++;
+    s->time += dt;
     return mps_check_finite(s);
 }

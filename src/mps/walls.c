@@ -28,7 +28,17 @@
  *     layer lies dp/2 inside the solid, so its pressure exceeds that of
  *     the face by rho g dp/2, and edge/corner particles (diagonal normals)
  *     add about 0.7 dp of width per edge: on the 20 dp floor of the 2-D
- *     test tank the load is 10 % above the water weight (test_step.c).
+ *     test tank the load is 10 % above the water weight (test_step.c);
+ *   - a patch with a prescribed motion (settings wall_motion) moves
+ *     rigidly: its wall and dummy particles carry the velocity of the
+ *     step, (d(t + dt) - d(t))/dt, so that the viscous term sees the
+ *     wall's no-slip velocity and the PPE's div u* its motion, and are
+ *     moved by d(t + dt) - d(t) (positions exact to round-off); a patch
+ *     past its removeAt is deleted at the start of the step, dummies of
+ *     other patches that leaned on it lose their partner (pressure 0).
+ *     While such patches exist, a dummy's partner is searched in its own
+ *     patch only: a gate's dummy must not take the pressure of the floor
+ *     it leaves behind.
  */
 #include <math.h>
 #include <string.h>
@@ -37,6 +47,16 @@
 #include "core/log.h"
 #include "mps/mps.h"
 #include "mps/mps_impl.h"
+
+/* Patch k moves or is removed at some time. */
+static int patch_dynamic(const struct mps_solver *s, int k)
+{
+    const struct mps_settings *S = &s->S;
+    if (k < 0 || k >= S->n_wall_motion || !S->wall_motion)
+        return 0;
+    const struct wall_motion *m = &S->wall_motion[k];
+    return wall_motion_moves(m) || isfinite(m->remove_at);
+}
 
 int mps_find_partners(struct mps_solver *s)
 {
@@ -51,6 +71,10 @@ int mps_find_partners(struct mps_solver *s)
         for (int64_t k = nl->start[i]; k < nl->start[i + 1]; k++) {
             int j = nl->j[k];
             if (P->type[j] != MPS_WALL)
+                continue;
+            if (P->patch[j] != P->patch[i] && s->walls_move
+                && (patch_dynamic(s, P->patch[i])
+                    || patch_dynamic(s, P->patch[j])))
                 continue;
             /* ties (corners) go to the smaller id: independent of order */
             double r = nl->r[k];
@@ -73,6 +97,10 @@ int mps_find_partners(struct mps_solver *s)
             double best = INFINITY;
             for (int64_t k = nl->start[i]; k < nl->start[i + 1]; k++) {
                 int j = nl->j[k];
+                if (P->patch[j] != P->patch[i] && s->walls_move
+                    && (patch_dynamic(s, P->patch[i])
+                        || patch_dynamic(s, P->patch[j])))
+                    continue;
                 if (P->type[j] == MPS_DUMMY && P->partner[j] >= 0
                     && nl->r[k] < best) {
                     best = nl->r[k];
@@ -157,5 +185,73 @@ void mps_wall_forces(const struct mps_solver *s, int npatch, double *force)
             continue;
         for (int q = 0; q < 3; q++)
             force[3 * k + q] += P->p[i] * area * P->normal[3 * i + q];
+    }
+}
+
+/* Delete the particles of patches removed by time t; returns how many. */
+static int remove_patches(struct mps_solver *s, double t)
+{
+    struct mps_particles *P = &s->P;
+    const struct wall_motion *wm = s->S.wall_motion;
+    int m = 0;
+    for (int i = 0; i < P->n; i++) {
+        int k = P->patch[i];
+        if (P->type[i] == MPS_FLUID || k < 0 || k >= s->S.n_wall_motion
+            || !wall_motion_removed(&wm[k], t))
+            s->perm[m++] = i;
+    }
+    int gone = P->n - m;
+    if (gone) {
+        mps_particles_permute(s, s->perm, m);
+        s->rebuild = 1;   /* the list and the grid index the old set */
+    }
+    return gone;
+}
+
+int mps_walls_begin_step(struct mps_solver *s, double dt)
+{
+    struct mps_particles *P = &s->P;
+    const struct wall_motion *wm = s->S.wall_motion;
+    const int np = s->S.n_wall_motion;
+    if (!s->walls_move)
+        return SIM_OK;
+    const double t = s->time;
+    int gone = remove_patches(s, t);
+    if (gone)
+        log_info("    t = %g s: %d wall/dummy particle(s) of removed "
+                 "patches deleted", t, gone);
+    for (int k = 0; k < np; k++) {
+        double d0[3], d1[3];
+        wall_motion_displacement(&wm[k], t, d0);
+        wall_motion_displacement(&wm[k], t + dt, d1);
+        for (int q = 0; q < 3; q++)
+            s->wall_dx[3 * k + q] = d1[q] - d0[q];
+    }
+#pragma omp parallel for schedule(static)
+    for (int i = 0; i < P->n; i++) {
+        int k = P->patch[i];
+        if (P->type[i] == MPS_FLUID || k < 0 || k >= np
+            || !wall_motion_moves(&wm[k]))
+            continue;
+        for (int q = 0; q < 3; q++)
+            P->u[3 * i + q] = s->wall_dx[3 * k + q] / dt;
+    }
+    return SIM_OK;
+}
+
+void mps_walls_move(struct mps_solver *s)
+{
+    struct mps_particles *P = &s->P;
+    const int np = s->S.n_wall_motion;
+    if (!s->walls_move)
+        return;
+#pragma omp parallel for schedule(static)
+    for (int i = 0; i < P->n; i++) {
+        int k = P->patch[i];
+        if (P->type[i] == MPS_FLUID || k < 0 || k >= np
+            || !wall_motion_moves(&s->S.wall_motion[k]))
+            continue;
+        for (int q = 0; q < 3; q++)
+            P->x[3 * i + q] += s->wall_dx[3 * k + q];
     }
 }

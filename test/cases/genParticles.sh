@@ -303,7 +303,7 @@ bad grain_overlap "grains would overlap" 's/diameter 0.005;/diameter 0.006;/'
 bad open_face "unknown face 'top'" 's/open    (zmax);/open (top);/'
 bad fluid_jitter "jitter of a fluid region must be between 0 and 0.25" \
     's/hydrostaticPressure yes;/hydrostaticPressure yes; jitter 0.3;/'
-bad moving_wall "moving walls are not supported" 's/type    wall;/type    wall; velocity (0.1 0 0);/'
+bad moving_wall "a moving wall needs motion" 's/type    wall;/type    wall; velocity (0.1 0 0);/'
 bad grain_volume_word "valid: fill scale" \
     's/hydrostaticPressure yes;/hydrostaticPressure yes; grainVolume remove;/'
 # a forgotten ';' (issue 15 item 6): named at the next word, not "got 3 values"

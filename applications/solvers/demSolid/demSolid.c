@@ -81,7 +81,7 @@ static int create_grains(struct solid *s)
     TRY(app_read_dict_optional(&s->app, "system/particleDict", &s->particles));
     s->dim = 3;
     if (s->particles)
-        TRY(dem_read_walls(s->particles, d, &s->dim));
+        TRY(dem_read_walls(s->particles, s->app.case_abs, d, &s->dim));
     TRY(gravity_case(&s->app, s->dim, d->gravity, &s->gravity));
     snprintf(rel, sizeof rel, "%s/dem.vtu", s->rt.name);
     TRY(dem_read_grains(app_path(&s->app, rel, path, sizeof path), d));

@@ -6,6 +6,8 @@
  *         constant/transportProperties, constant/particlePatches
  *         (from genParticles: patch names, dimension, dp), constant/g
  *         (optional: a missing file is a logged default),
+ *         system/particleDict (optional: the motion and removeAt of its
+ *         wall regions, matched to the patches by name),
  *         <startTime>/fluid.vtu
  * Writes  <time>/fluid.vtu, fluid.pvd, postProcessing/<functionObject>/,
  *         postProcessing/usedParameters/mpsFluid
@@ -45,6 +47,8 @@
 struct fluid {
     struct app app;
     struct dict *control, *transport, *gravity, *schemes, *solution, *patches;
+    struct dict *particles;         /* system/particleDict, or NULL      */
+    struct wall_motion motion[MAX_PATCHES];
     struct run_time rt;
     struct mps_solver s;
     int dim;
@@ -102,6 +106,65 @@ static int read_patches(struct fluid *f)
         return dict_error(f->patches, "dp", SIM_ERR_DICT, "dp must be > 0");
     dict_mark_used(f->patches, "types");
     dict_mark_used(f->patches, "wallLayers");
+    return SIM_OK;
+}
+
+/* The region of system/particleDict that made patch `name`: a list item
+ * name { ... } or an entry of a regions { } dictionary. */
+static int find_region(const struct dict *pd, const char *name,
+                       const struct dict **out)
+{
+    *out = NULL;
+    if (dict_is_dict(pd, "regions")) {
+        const struct dict *rd;
+        TRY(dict_get_dict(pd, "regions", &rd));
+        return dict_find_dict(rd, name, out);
+    }
+    const struct dict_value *l;
+    TRY(dict_get_list(pd, "regions", &l));
+    for (int i = 0; i + 1 < dict_value_len(l); i += 2) {
+        const struct dict_value *v = dict_value_at(l, i);
+        const struct dict_value *b = dict_value_at(l, i + 1);
+        if (dict_value_kind(v) == DICT_WORD
+            && strcmp(dict_value_text(v), name) == 0
+            && dict_value_kind(b) == DICT_DICT) {
+            *out = dict_value_dict(b);
+            break;
+        }
+    }
+    return SIM_OK;
+}
+
+/* Motion and removeAt of the wall patches (system/particleDict, the file
+ * genParticles and demSolid read too, so that the walls agree). */
+static int read_motions(struct fluid *f, struct mps_settings *S)
+{
+    for (int k = 0; k < MAX_PATCHES; k++)
+        wall_motion_init(&f->motion[k]);
+    TRY(app_read_dict_optional(&f->app, "system/particleDict",
+                               &f->particles));
+    if (!f->particles)
+        return SIM_OK;
+    for (int k = 0; k < f->npatches; k++) {
+        const struct dict *r;
+        TRY(find_region(f->particles, f->patch_names[k], &r));
+        if (!r)
+            continue;
+        const char *type;
+        TRY(dict_get_string(r, "type", &type));
+        int is_wall = !strcmp(type, "wall") || !strcmp(type, "tankWall");
+        TRY(wall_motion_read(r, is_wall, f->dim, f->app.case_abs,
+                             &f->motion[k]));
+        struct wall_motion *m = &f->motion[k];
+        if (wall_motion_moves(m))
+            log_info("Patch %s moves (motion %s)", f->patch_names[k],
+                     m->ops->name);
+        if (isfinite(m->remove_at))
+            log_info("Patch %s is removed at t = %g s", f->patch_names[k],
+                     m->remove_at);
+    }
+    S->wall_motion = f->motion;
+    S->n_wall_motion = f->npatches;
     return SIM_OK;
 }
 
@@ -207,6 +270,7 @@ static int create_fluid(struct fluid *f)
     TRY(app_read_dict(&f->app, "system/mpsSolution", &f->solution));
     TRY(mps_settings_read(f->transport, NULL, f->schemes, f->solution, &S));
     memcpy(S.g, g, sizeof S.g);
+    TRY(read_motions(f, &S));
     if (f->gravity && f->dim == 2 && S.g[2] != 0)
         return dict_error(f->gravity, dict_has(f->gravity, "value") ? "value"
                           : "g", SIM_ERR_DICT, "2-D case: gravity must lie "
@@ -230,6 +294,7 @@ static int create_fluid(struct fluid *f)
     log_info("Fluid cloud %s: %d particles, %d-D, dp = %g m", rel, P.n,
              f->dim, f->dp);
     TRY(mps_solver_init(&f->s, &P, &S, f->dp, ls));
+    f->s.time = f->rt.value;
     TRY(create_coupling(f));
     if (f->s.P.phi && !f->coupled)
         return sim_error(SIM_ERR_INPUT, "%s: field 'volumeFraction' (fluid "
@@ -439,6 +504,9 @@ static void cleanup(struct fluid *f)
     dict_free(f->schemes);
     dict_free(f->solution);
     dict_free(f->patches);
+    dict_free(f->particles);
+    for (int k = 0; k < MAX_PATCHES; k++)
+        wall_motion_free(&f->motion[k]);
 }
 
 int main(int argc, char **argv)

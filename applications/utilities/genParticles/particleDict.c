@@ -8,9 +8,11 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "core/app.h"
 #include "core/dict.h"
 #include "core/error.h"
 #include "genParticles.h"
+#include "particles/motion/motion.h"
 
 const char *const region_type_names[] = { "tankWall", "wall", "fluid",
                                           "grains", NULL };
@@ -174,14 +176,20 @@ static int read_region(const struct gen_case *c, struct region *r)
     TRY(dict_get_vector_or(d, "velocity", 3, zero3, r->velocity));
     if (c->dim == 2)
         r->velocity[2] = 0;
-    /* Neither solver moves walls: refuse what they would ignore. */
-    if ((r->type == REGION_TANK_WALL || r->type == REGION_WALL)
-        && (r->velocity[0] != 0 || r->velocity[1] != 0
-            || r->velocity[2] != 0))
-        return dict_error(d, "velocity", SIM_ERR_DICT, "region '%s': moving "
-                          "walls are not supported (mpsFluid and demSolid "
-                          "keep every wall fixed); remove 'velocity' or set "
-                          "it to (0 0 0)", r->name);
+    /* A wall moves by its motion only (which the solvers read too):
+     * refuse a velocity they would ignore. */
+    int is_wall = r->type == REGION_TANK_WALL || r->type == REGION_WALL;
+    if (is_wall && (r->velocity[0] != 0 || r->velocity[1] != 0
+                    || r->velocity[2] != 0))
+        return dict_error(d, "velocity", SIM_ERR_DICT, "region '%s': a "
+                          "wall's velocity is not read; a moving wall "
+                          "needs motion { type translation; velocity "
+                          "(...); }", r->name);
+    /* checked here so that a bad motion stops before anything is
+     * written; the solvers read it again */
+    struct wall_motion m;
+    TRY(wall_motion_read(d, is_wall, c->dim, c->app->case_abs, &m));
+    wall_motion_free(&m);
     switch (r->type) {
     case REGION_TANK_WALL:
         TRY(read_open(c, r));

@@ -66,7 +66,9 @@ static int rhs(realtype t, N_Vector y, N_Vector ydot, void *ud)
     return rc == SIM_OK ? 0 : -1;
 }
 
-/* Largest step for which no grain moves past a wall or out of the skin. */
+/* Largest step for which no grain moves past a wall or out of the skin.
+ * A wall closes the gap at the grain's speed relative to it (a moving wall
+ * can overtake a grain at rest). */
 static double move_limit(struct dem *d, const double *x, const double *v)
 {
     double h = INFINITY, vmax = 0;
@@ -74,13 +76,14 @@ static double move_limit(struct dem *d, const double *x, const double *v)
         const double *vi = &v[3 * i];
         double s = sqrt(vi[0] * vi[0] + vi[1] * vi[1] + vi[2] * vi[2]);
         vmax = fmax(vmax, s);
-        if (s == 0)
-            continue;
-        double gap = INFINITY;
-        for (int w = 0; w < d->nwalls; w++)
-            gap = fmin(gap, wall_distance(&d->walls[w], &x[3 * i]) - d->r[i]);
-        if (isfinite(gap))
-            h = fmin(h, (fmax(gap, 0) + 0.25 * d->r[i]) / s);
+        for (int w = 0; w < d->nwalls; w++) {
+            const double *vw = d->walls[w].vel;
+            double dv[3] = {vi[0] - vw[0], vi[1] - vw[1], vi[2] - vw[2]};
+            double sr = sqrt(dv[0] * dv[0] + dv[1] * dv[1] + dv[2] * dv[2]);
+            double gap = wall_distance(&d->walls[w], &x[3 * i]) - d->r[i];
+            if (sr > 0 && isfinite(gap))
+                h = fmin(h, (fmax(gap, 0) + 0.25 * d->r[i]) / sr);
+        }
     }
     if (d->n > 1 && vmax > 0) {
         double room = 0.5 * d->nl.skin - nlist_max_displacement(&d->nl, x);

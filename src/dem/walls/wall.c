@@ -4,10 +4,15 @@
  */
 #include "dem/walls/wall.h"
 
+#include <math.h>
+#include <string.h>
+
 #include "core/error.h"
 
 double wall_distance(const struct dem_wall *w, const double x[3])
 {
+    if (w->removed)
+        return INFINITY;
     double s = geom_distance(&w->g, x);
     return w->inside ? -s : s;
 }
@@ -15,6 +20,8 @@ double wall_distance(const struct dem_wall *w, const double x[3])
 int wall_contact(const struct dem_wall *w, const double x[3], double r,
                  double n[3], double *delta)
 {
+    if (w->removed)
+        return 0;
     if (w->g.shape == GEOM_HALFSPACE && w->g.dim == 3 && !w->inside) {
         /* the common case (floors, tank faces) without the general call */
         const double *u = w->g.axis, *p = w->g.p;
@@ -43,12 +50,30 @@ int wall_contact(const struct dem_wall *w, const double x[3], double r,
 int wall_plane(struct dem_wall *w, int dim, const double p[3],
                const double u[3], int patch)
 {
-    w->inside = 0;
+    memset(w, 0, sizeof *w);
     w->patch = patch;
+    w->motion = -1;
     /* geom_halfspace's normal is the solid's outward normal: the grains'
      * side is where u points, so the solid lies on -u and its outward
      * normal is u. */
-    return geom_halfspace(&w->g, dim, p, u);
+    TRY(geom_halfspace(&w->g, dim, p, u));
+    w->g0 = w->g;
+    return SIM_OK;
+}
+
+void wall_place(struct dem_wall *w, const struct wall_motion *m, double t)
+{
+    double d[3];
+    w->removed = wall_motion_removed(m, t);
+    wall_motion_displacement(m, t, d);
+    wall_motion_velocity(m, t, w->vel);
+    w->g = w->g0;
+    /* a rigid translation moves every point the solid is defined by */
+    for (int a = 0; a < 3; a++) {
+        w->g.lo[a] += d[a];
+        w->g.hi[a] += d[a];
+        w->g.p[a] += d[a];
+    }
 }
 
 int wall_add_box_inside(struct dem_wall *walls, int *nwalls, int dim,
