@@ -70,6 +70,8 @@ int dem_resize(struct dem *d, size_t n)
 
 void dem_walls_at(struct dem *d, double t)
 {
+    if (!d->motions)   /* walls made without dem_read_walls stay fixed */
+        return;
     for (int w = 0; w < d->nwalls; w++)
         if (d->walls[w].motion >= 0)
             wall_place(&d->walls[w], &d->motions[d->walls[w].motion], t);
@@ -86,7 +88,7 @@ static int wall_candidates(struct dem *d)
     for (size_t i = 0; i < d->n; i++) {
         for (int w = 0; w < d->nwalls; w++) {
             const struct dem_wall *wa = &d->walls[w];
-            int moves = wa->motion >= 0 && !wa->removed
+            int moves = d->motions && wa->motion >= 0 && !wa->removed
                         && wall_motion_moves(&d->motions[wa->motion]);
             if (!moves && wall_distance(wa, &d->x[3 * i])
                               >= d->r[i] + d->nl.skin)

@@ -207,8 +207,7 @@ int dem_forces(struct dem *d, double tm, const double *x, const double *v,
                const double *w, double tau, int commit, double *acc,
                double *alpha)
 {
-    if (d->motions)
-        dem_walls_at(d, tm);
+    dem_walls_at(d, tm);
     /* Small systems run on one thread: a parallel region costs more than
      * the work (and much more on a loaded machine). */
     int nth = n_small(d) ? 1 : omp_get_max_threads();
