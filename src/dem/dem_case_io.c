@@ -134,6 +134,10 @@ static int add_region(struct dem *d, const char *name, const struct dict *r,
     if (!is_wall)
         return SIM_OK;  /* fluid and grains regions make no walls */
     int motion = wall_motion_moves(m) || isfinite(m->remove_at) ? patch : -1;
+    if (wall_motion_moves(m))
+        log_info("Wall %s moves (motion %s)", name, m->ops->name);
+    if (isfinite(m->remove_at))
+        log_info("Wall %s is removed at t = %g s", name, m->remove_at);
     struct geom g;
     TRY(read_shape(r, dim, &g));
     if (strcmp(type, "tankWall") == 0)
