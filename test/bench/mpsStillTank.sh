@@ -10,6 +10,9 @@
 # the speed passes 0.01 sqrt(g h). Draws stillTank.png (gnuplot) in the
 # current directory. One thread (OMP_NUM_THREADS=1); about 1 s of wall time
 # per 1000 steps on a quiet machine. KEEP=DIR keeps the case in DIR.
+# SET='system/mpsSchemes:shifting=none system/mpsSchemes:sourceMix=0.01'
+# changes entries of the copied case first (bin/dictTool -set), to compare
+# variants of the scheme.
 ROOT="$(cd "$(dirname "$0")/../.." && pwd)"
 STEPS=${1:-100000}
 SNAP=${2:-50}
@@ -18,6 +21,9 @@ c=${KEEP:-$(mktemp -d)/case}
 [ -n "$KEEP" ] || trap 'rm -rf "${c%/case}"' EXIT
 rm -rf "$c"; cp -r "$ROOT/tutorials/mpsFluid/hydrostaticTank2D" "$c"
 (cd "$c" && ./Allclean > /dev/null 2>&1)
+for kv in ${SET:-}; do
+    "$ROOT/bin/dictTool" "$c/${kv%%:*}" -set "${kv#*:}" > /dev/null || exit 1
+done
 dt=$(sed 's|//.*||' "$c/system/controlDict" | awk '/^deltaT/ { gsub(";", "", $2); print $2 }')
 end=$(awk -v n=$STEPS -v dt=$dt 'BEGIN { printf "%.10g", n * dt }')
 wi=$(awk -v e=$end -v k=$SNAP 'BEGIN { printf "%.10g", e / k }')
@@ -27,7 +33,7 @@ s=$(date +%s)
 (cd "$c" && "$ROOT/bin/genParticles" > log.genParticles 2>&1 && "$ROOT/bin/mpsFluid" > log.mpsFluid 2>&1)
 rc=$?
 wall=$(( $(date +%s) - s ))
-echo "# hydrostaticTank2D, $STEPS steps of $dt s (endTime $end s), exit $rc, $wall s wall, load $(cut -d' ' -f1-3 /proc/loadavg)"
+echo "# hydrostaticTank2D${SET:+ ($SET)}, $STEPS steps of $dt s (endTime $end s), exit $rc, $wall s wall, load $(cut -d' ' -f1-3 /proc/loadavg)"
 [ $rc -eq 0 ] || { grep -A2 FATAL "$c/log.mpsFluid"; }
 rho=1000; g=9.81
 h=$("$ROOT/bin/vtuInfo" -dump "$c/0/fluid.vtu" 2>/dev/null | awk '!/^#/ && NF > 10 && $4 == 0 { if ($2 > m) m = $2 } END { print m + 0.0025 }')
