@@ -7,10 +7,12 @@
  *   beta  = -ln e / sqrt(ln^2 e + pi^2)
  *
  * S_n is the tangent normal stiffness kn, S_t the tangential spring kt of
- * the selected tangentialStiffness (mindlin: exactly LIGGGHTS' S_t). The
- * factor sqrt(5/6) makes e right near 1 only: for Hertz the rebound is
- * 0.900, 0.802, 0.516, 0.331, 0.148 for e = 0.9, 0.8, 0.5, 0.3, 0.1
- * (A0-22, test_restitution_exact.c). Linear: the same formula (not exact).
+ * the selected tangentialStiffness (mindlin: exactly LIGGGHTS' S_t). For
+ * Hertz this is the exact dashpot within the accuracy of the impact ODE
+ * of damping_restitution.c: zeta_exact/beta = sqrt(5/6) to 2e-7 for
+ * e = 0.1 ... 0.99, so e is returned to 5e-7 (A0-22,
+ * test_hertz_mindlin.c). With the linear law the factor under-damps:
+ * e' = 0.134, 0.338, 0.533, 0.816, 0.908 for e = 0.1, 0.3, 0.5, 0.8, 0.9.
  * Reference: Tsuji et al. (1992) Powder Technol. 71:239; LIGGGHTS
  * documentation of pair gran model hertz.
  */
