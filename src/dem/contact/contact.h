@@ -77,7 +77,8 @@ struct contact_normal_ops {
     double exponent;
     /* Elastic force magnitude fel [N] (>= 0, repulsive), tangent stiffness
      * kn = dF_el/d delta [N/m] (damping and the stability bound use it), and
-     * the tangential spring stiffness kt [N/m] it implies (eq. 22). */
+     * the tangential spring stiffness kt = ratio_t chi delta^(p-1) [N/m]
+     * (eq. 22 with the ratio of tangentialStiffness, A0-21). */
     void (*eval)(const struct contact_coeffs *c, const struct contact_geom *g,
                  double *fel, double *kn, double *kt);
 };
@@ -182,7 +183,8 @@ extern const struct contact_twisting_ops contact_twisting_viscous;
 extern const struct contact_stiffness_ops contact_stiffness_mindlin;
 extern const struct contact_stiffness_ops contact_stiffness_xie2025;
 
-/* Fill the derived constants of c from E, nu, rho, mu, e (already set);
+/* Fill the material constants of c (estar, beta) from E, nu, rho, mu, e
+ * (already set); those that depend on the sub-models are contact_law_init's;
  * SIM_ERR_INPUT with a message naming the bad value otherwise:
  * E <= 0, nu outside (-1, 0.5), e outside (0, 1], mu < 0, rho <= 0. */
 int contact_coeffs_init(struct contact_coeffs *c);
