@@ -177,6 +177,10 @@ int dem_setup(struct dem *d)
                                            : contact_chi(&d->law.c,
                                                          0.5 * d->rmax);
         double w2 = fmax(kw / mmin, 2.0 * kp / mmin);
+        /* the sticking tangential spring acts on the mass m I/(I + m R^2)
+         * = 2 m/7 of a sphere on a wall: its frequency is higher than the
+         * normal one when kt/kn > 2/7 (tangentialStiffness mindlin) */
+        w2 *= fmax(1.0, 3.5 * d->law.c.ratio_t);
         d->dt_stable = fmin(d->dt_stable, 2.0 / sqrt(w2));
     }
     if (d->nl.skin <= 0)

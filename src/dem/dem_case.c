@@ -72,6 +72,13 @@ int dem_read_properties(const struct dict *props, struct dem *d)
     TRY(model_select(c, "rolling", "DEM rolling resistance",
                      (const void *const *)contact_rolling_table, "none", &m));
     law->rolling = m;
+    TRY(model_select(c, "twisting", "DEM twisting resistance",
+                     (const void *const *)contact_twisting_table, "none", &m));
+    law->twisting = m;
+    TRY(model_select(c, "tangentialStiffness", "DEM tangential stiffness",
+                     (const void *const *)contact_stiffness_table, "mindlin",
+                     &m));
+    law->stiffness = m;
     if (law->normal == &contact_normal_linear) {
         TRY(dict_get_scalar_or(c, "linearCoeffs/stiffness", 0.0,
                                &law->c.kn_linear));
@@ -94,6 +101,15 @@ int dem_read_properties(const struct dict *props, struct dem *d)
             return dict_error(c, "viscousCoeffs/rollingViscosity",
                               SIM_ERR_DICT, "rollingViscosity must be >= 0");
     }
+    if (law->twisting == &contact_twisting_viscous) {
+        TRY(dict_get_scalar(c, "twistingViscousCoeffs/twistingViscosity",
+                            &law->c.eta_twist));
+        if (!(law->c.eta_twist >= 0))
+            return dict_error(c, "twistingViscousCoeffs/twistingViscosity",
+                              SIM_ERR_DICT, "twistingViscosity must be >= 0");
+    }
+    /* the material was checked above: only the model constants are new */
+    TRY(contact_law_init(law));
     if (law->tangential != &contact_tangential_none && law->c.mu == 0)
         log_warn("%s: tangential model %s with mu = 0 gives no friction",
                  dict_file(props), law->tangential->name);

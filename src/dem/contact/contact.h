@@ -1,15 +1,18 @@
 /*
  * contact.h — DEM contact laws assembled from named sub-models
  * (doc/design.md C5, LAMMPS granular_model, LIGGGHTS): normal, damping,
- * tangential, rolling.
+ * tangential, rolling, twisting, and the tangential stiffness choice
+ * (tangentialStiffness).
  *
  * Geometry is computed once per contact (contact_geom); the sub-models only
  * turn geometry into forces, always in the same order:
  *
  *   normal      elastic force F_el(delta) and the stiffnesses it implies
- *   damping     eta^n, eta^t from the restitution coefficient (eqs. 23-24)
+ *               (kt from the tangentialStiffness ratio, doc/theory.md A0-21)
+ *   damping     eta^n, eta^t from the restitution coefficient (A0-22)
  *   tangential  spring + Coulomb slider (eqs. 20, 22), history per contact
- *   rolling     resisting torque
+ *   rolling     resisting torque from the rolling velocity (A0-23)
+ *   twisting    resisting torque from the twisting velocity (A0-23)
  *
  * Notation and sign convention (doc/theory.md A.6): for grains k and l the unit
  * normal n points from k to l (for a wall: from the grain into the wall);
@@ -36,13 +39,19 @@ struct contact_coeffs {
     double mu;          /* Coulomb friction coefficient                  */
     double e;           /* normal restitution coefficient, (0, 1]        */
     double estar;       /* E/(2(1 - nu^2)) [Pa]                          */
-    double ratio_t;     /* chi^t/chi^n, eq. (22): 1/(2 + nu) (A0-08)     */
     double beta;        /* -ln e / sqrt(ln^2 e + pi^2), eqs. (23)-(24)   */
-    double hertz_tn;    /* sqrt(kt/kn) of the Hertz law = sqrt(ratio_t/1.5),
-                           so that eta^t = eta^n hertz_tn without a sqrt */
     double kn_linear;   /* >0: fixed linear stiffness [N/m] overriding chi */
     double mu_roll;     /* rolling friction coefficient (constantTorque) */
     double eta_roll;    /* rolling viscosity [N m s] (viscous)           */
+    double eta_twist;   /* twisting viscosity [N m s] (twisting viscous) */
+    /* Set by contact_law_init from the selected sub-models: */
+    double ratio_t;     /* chi^t/chi^n: kt = ratio_t chi delta^(p-1) for a
+                           normal law F = chi delta^p (A0-08, A0-21);
+                           mindlin 2p(1 - nu)/(2 - nu), xie2025 1/(2 + nu) */
+    double zeta;        /* damping ratio: eta = 2 zeta sqrt(k m*) with k the
+                           tangent normal (tangential) stiffness (A0-22)   */
+    double hertz_tn;    /* sqrt(kt/kn) of the Hertz law = sqrt(ratio_t/1.5),
+                           so that eta^t = eta^n hertz_tn without a sqrt */
 };
 
 /* One contact seen from grain k. */
@@ -63,9 +72,13 @@ struct contact_geom {
 struct contact_normal_ops {
     const char *name;
     const char *reference;
+    /* p of F_el = chi delta^p (1 linear, 1.5 Hertz): the damping's
+     * restitution mapping and the tangential stiffness ratio depend on it */
+    double exponent;
     /* Elastic force magnitude fel [N] (>= 0, repulsive), tangent stiffness
      * kn = dF_el/d delta [N/m] (damping and the stability bound use it), and
-     * the tangential spring stiffness kt [N/m] it implies (eq. 22). */
+     * the tangential spring stiffness kt = ratio_t chi delta^(p-1) [N/m]
+     * (eq. 22 with the ratio of tangentialStiffness, A0-21). */
     void (*eval)(const struct contact_coeffs *c, const struct contact_geom *g,
                  double *fel, double *kn, double *kt);
 };
@@ -74,6 +87,9 @@ struct contact_normal_ops {
 struct contact_damping_ops {
     const char *name;
     const char *reference;
+    /* Damping ratio zeta(e, p) cached in contact_coeffs.zeta by
+     * contact_law_init (p the normal law's exponent); NULL: zeta = 0. */
+    double (*zeta)(double e, double p);
     /* eta^n, eta^t [kg/s] from the stiffnesses kn, kt. */
     void (*eval)(const struct contact_coeffs *c, const struct contact_geom *g,
                  double kn, double kt, double *eta_n, double *eta_t);
@@ -93,21 +109,44 @@ struct contact_tangential_ops {
                  double tau, double hnew[3], double ft[3]);
 };
 
-/* Rolling resistance: torque on k (l receives -m). */
+/* Rolling resistance: torque on k (l receives -m). fel is the elastic
+ * normal force F_el(delta) [N] (no dashpot, A0-23). */
 struct contact_rolling_ops {
     const char *name;
     const char *reference;
     void (*eval)(const struct contact_coeffs *c, const struct contact_geom *g,
-                 double fn, double m[3]);
+                 double fel, double m[3]);
 };
 
-/* The assembled law. */
+/* Twisting resistance (rotation about n): torque on k (l receives -m),
+ * same arguments as the rolling law; the result is added to mroll. */
+struct contact_twisting_ops {
+    const char *name;
+    const char *reference;
+    void (*eval)(const struct contact_coeffs *c, const struct contact_geom *g,
+                 double fel, double m[3]);
+};
+
+/* Tangential stiffness: the ratio chi^t/chi^n for a normal law of
+ * exponent p and Poisson ratio nu (kt = ratio chi delta^(p - 1)). */
+struct contact_stiffness_ops {
+    const char *name;
+    const char *reference;
+    double (*ratio)(double nu, double p);
+};
+
+/* The assembled law. The members after c were added later and may be
+ * left NULL (zero-initialised): NULL means the default, `mindlin`
+ * stiffness and `none` twisting. contact_law_init fills the derived
+ * members of c; call it after choosing the sub-models. */
 struct contact_law {
     const struct contact_normal_ops *normal;
     const struct contact_damping_ops *damping;
     const struct contact_tangential_ops *tangential;
     const struct contact_rolling_ops *rolling;
     struct contact_coeffs c;
+    const struct contact_stiffness_ops *stiffness;
+    const struct contact_twisting_ops *twisting;
 };
 
 /* Result of one contact evaluation. */
@@ -124,22 +163,42 @@ extern const struct contact_normal_ops *const contact_normal_table[];
 extern const struct contact_damping_ops *const contact_damping_table[];
 extern const struct contact_tangential_ops *const contact_tangential_table[];
 extern const struct contact_rolling_ops *const contact_rolling_table[];
+extern const struct contact_twisting_ops *const contact_twisting_table[];
+extern const struct contact_stiffness_ops *const contact_stiffness_table[];
 
 extern const struct contact_normal_ops contact_normal_linear;
 extern const struct contact_normal_ops contact_normal_hertz;
 extern const struct contact_damping_ops contact_damping_none;
 extern const struct contact_damping_ops contact_damping_restitution;
 extern const struct contact_damping_ops contact_damping_restitution_constant;
+extern const struct contact_damping_ops contact_damping_xie2025;
+extern const struct contact_damping_ops contact_damping_tsuji;
 extern const struct contact_tangential_ops contact_tangential_none;
 extern const struct contact_tangential_ops contact_tangential_coulomb;
 extern const struct contact_rolling_ops contact_rolling_none;
 extern const struct contact_rolling_ops contact_rolling_constant_torque;
 extern const struct contact_rolling_ops contact_rolling_viscous;
+extern const struct contact_twisting_ops contact_twisting_none;
+extern const struct contact_twisting_ops contact_twisting_viscous;
+extern const struct contact_stiffness_ops contact_stiffness_mindlin;
+extern const struct contact_stiffness_ops contact_stiffness_xie2025;
 
-/* Fill the derived constants of c from E, nu, rho, mu, e (already set);
+/* Fill the material constants of c (estar, beta) from E, nu, rho, mu, e
+ * (already set); those that depend on the sub-models are contact_law_init's;
  * SIM_ERR_INPUT with a message naming the bad value otherwise:
  * E <= 0, nu outside (-1, 0.5), e outside (0, 1], mu < 0, rho <= 0. */
 int contact_coeffs_init(struct contact_coeffs *c);
+
+/* contact_coeffs_init, then the members of law->c that depend on the
+ * selected sub-models (ratio_t, zeta, hertz_tn). SIM_ERR_INPUT as above. */
+int contact_law_init(struct contact_law *law);
+
+/* Exact restitution of the spring-dashpot F = chi delta^p + 2 zeta
+ * sqrt(p chi delta^(p-1) m*) d(delta)/dt (no tensile cut-off): the
+ * rebound/impact speed ratio, which depends on zeta and p only, from the
+ * dimensionless impact ODE (damping_restitution.c), and its inverse. */
+double contact_restitution_of_zeta(double zeta, double p);
+double contact_zeta_of_restitution(double e, double p);
 
 /* Effective stiffness chi = (4/3) E* sqrt(R*) [N/m^1.5]. */
 double contact_chi(const struct contact_coeffs *c, double rstar);

@@ -1,12 +1,17 @@
 /*
  * contact_fused.h — the default law (normal hertz, damping restitution,
- * tangential coulomb, rolling none) written out in one inline function for
- * the force loop (doc/design.md C4: per-pair calls through four function
- * pointers cost about a tenth of the DEM step). It computes exactly what
+ * tangential coulomb, rolling none, twisting none, any
+ * tangentialStiffness) and its variants with the dashpots xie2025 and
+ * tsuji, written out in one inline function for the force loop
+ * (doc/design.md C4: per-pair calls through four function pointers cost
+ * about a tenth of the DEM step). The three dashpots are all
+ * eta = 2 zeta sqrt(k m*) with k the tangent stiffness; they differ only in
+ * zeta (contact_coeffs.zeta, set by contact_law_init). It computes what
  * contact_eval computes with those sub-models (normal_hertz.c,
- * damping_restitution.c, tangential_coulomb.c); test_contact_laws checks
- * the two against each other on random contacts. Any other combination
- * takes the generic path.
+ * damping_restitution.c, damping_xie2025.c, damping_tsuji.c,
+ * tangential_coulomb.c) up to rounding (eta^t = eta^n sqrt(kt/kn) here);
+ * test_contact_laws checks the two against each other on random contacts.
+ * Any other combination takes the generic path.
  */
 #ifndef MPSDEM_DEM_CONTACT_FUSED_H
 #define MPSDEM_DEM_CONTACT_FUSED_H
@@ -19,9 +24,12 @@
 static inline int contact_law_is_fused(const struct contact_law *law)
 {
     return law->normal == &contact_normal_hertz
-           && law->damping == &contact_damping_restitution
+           && (law->damping == &contact_damping_restitution
+               || law->damping == &contact_damping_xie2025
+               || law->damping == &contact_damping_tsuji)
            && law->tangential == &contact_tangential_coulomb
-           && law->rolling == &contact_rolling_none;
+           && law->rolling == &contact_rolling_none
+           && (!law->twisting || law->twisting == &contact_twisting_none);
 }
 
 static inline void contact_eval_fused(const struct contact_law *law,
@@ -35,7 +43,7 @@ static inline void contact_eval_fused(const struct contact_law *law,
     double sd = sqrt(g->delta);
     double chisd = chi * sd;
     double kn = 1.5 * chisd, kt = c->ratio_t * chisd;
-    double eta_n = 2.0 * c->beta * sqrt(kn * g->mstar);
+    double eta_n = 2.0 * c->zeta * sqrt(kn * g->mstar);
     double eta_t = eta_n * c->hertz_tn;
     double fn = chisd * g->delta + eta_n * g->vn;
     /* spring: rotate onto the tangent plane keeping its length, extend */

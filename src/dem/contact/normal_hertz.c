@@ -3,10 +3,12 @@
  *
  *   F_el = chi^n delta^{3/2},        chi^n = (4/3) E* sqrt(R*)        (21)
  *   kn   = dF_el/d delta = (3/2) chi^n delta^{1/2}
- *   kt   = chi^t delta^{1/2},        chi^t = chi^n/(2 + nu)           (22)
+ *   kt   = chi^t delta^{1/2},        chi^t = ratio_t chi^n            (22)
  *
- * kn, the tangent stiffness, enters the damping of eq. (23) (A0-09) and the
- * stability bound. Reference: Hertz (1882); Xie et al. (2025) eqs. (19)-(22)
+ * ratio_t from tangentialStiffness (A0-21): mindlin (default)
+ * 3 (1 - nu)/(2 - nu), i.e. kt = 8 G* sqrt(R* delta); xie2025 1/(2 + nu),
+ * eq. (22) as printed. kn, the tangent stiffness, enters the damping
+ * (A0-09, A0-22) and the stability bound. Reference: Hertz (1882); Xie et al. (2025) eqs. (19)-(22)
  * with the Hertz reading of A0-09. Valid for small elastic overlaps
  * (delta << R).
  */
@@ -27,6 +29,7 @@ static void eval_hertz(const struct contact_coeffs *c,
 
 const struct contact_normal_ops contact_normal_hertz = {
     .name = "hertz",
+    .exponent = 1.5,
     .reference = "Hertz 1882; Xie et al. 2025 eqs. 19-22, "
                  "doc/theory.md A0-09 (H)",
     .eval = eval_hertz,

@@ -4,9 +4,10 @@
  *   - every combination in the registries obeys Newton's third law and
  *     conserves angular momentum pair-wise;
  *   - E2-01 Rayleigh step; E2-02 Hertz contact time and overlap;
- *     E2-03 energy conservation for e = 1; E2-04 restitution (linear 1 %,
- *     Hertz 5 % at 0.1, 0.5, 1 m/s, head-on and wall), and the printed
- *     form of eqs. 23-24 (restitutionConstant); E2-05 resting
+ *     E2-03 energy conservation for e = 1; E2-04 restitution e = 0.9
+ *     (0.5 % at 0.1, 0.5, 1 m/s, head-on and wall; the sweep over e is in
+ *     test_hertz_mindlin.c), and the printed form of eqs. 23-24
+ *     (restitutionConstant); E2-05 resting
  *     overlap; E2-07 stick/slip of the tangential slider; E2-08 oblique
  *     impact impulse ratio;
  *   - invalid material data is refused.
@@ -33,9 +34,12 @@ static void test_third_law_all_models(void **state)
     for (int a = 0; contact_normal_table[a]; a++)
         for (int b = 0; contact_damping_table[b]; b++)
             for (int c = 0; contact_tangential_table[c]; c++)
-                for (int r = 0; contact_rolling_table[r]; r++) {
+                for (int r = 0; contact_rolling_table[r]; r++)
+                for (int w = 0; contact_twisting_table[w]; w++) {
                     struct dem d;
                     dem_init(&d);
+                    d.law.twisting = contact_twisting_table[w];
+                    d.law.stiffness = contact_stiffness_table[(a + b + w) % 2];
                     assert_int_equal(th_law(&d, contact_normal_table[a],
                                             contact_damping_table[b],
                                             contact_tangential_table[c],
@@ -43,6 +47,7 @@ static void test_third_law_all_models(void **state)
                                             0.7), SIM_OK);
                     d.law.c.mu_roll = 0.05;
                     d.law.c.eta_roll = 1e-7;
+                    d.law.c.eta_twist = 2e-7;
                     d.gravity[2] = 0;
                     assert_int_equal(th_grains(&d, 2), SIM_OK);
                     d.r[1] = 0.8 * T1_R;
@@ -83,12 +88,13 @@ static void test_third_law_all_models(void **state)
                     double lm = fabs(lsum[0]) + fabs(lsum[1]) + fabs(lsum[2]);
                     double dx = x1[0], dy = x1[1], dz = x1[2];
                     double delta = d.r[0] + d.r[1] - sqrt(dx * dx + dy * dy + dz * dz);
-                    if (contact_rolling_table[r] == &contact_rolling_none)
+                    if (contact_rolling_table[r] == &contact_rolling_none
+                        && contact_twisting_table[w] == &contact_twisting_none)
                         assert_true(lm <= delta * 3 * fmag + 1e-12 * fmag * T1_R);
                     dem_free(&d);
                     combos++;
                 }
-    assert_int_equal(combos, 2 * 3 * 2 * 3);
+    assert_int_equal(combos, 2 * 5 * 2 * 3 * 2);
 }
 
 /* ---- E2-01 ---------------------------------------------------------------- */
@@ -239,7 +245,7 @@ static void test_energy_conserved_undamped(void **state)
     }
 }
 
-/* E2-04: restitution e = 0.9. */
+/* E2-04: restitution e = 0.9 (damping restitution). */
 static void test_restitution(void **state)
 {
     (void)state;
@@ -253,8 +259,8 @@ static void test_restitution(void **state)
                     speeds[k], wall, &dem_integrator_verlet, 0, &ch);
             printf("  %s v = %.1f m/s: e linear %.5f, hertz %.5f\n",
                    wall ? "wall" : "head-on", speeds[k], cl.e, ch.e);
-            assert_true(rel(cl.e, 0.9) < 0.01);
-            assert_true(rel(ch.e, 0.9) < 0.05);
+            assert_true(rel(cl.e, 0.9) < 0.005);
+            assert_true(rel(ch.e, 0.9) < 0.005);
         }
 }
 
@@ -347,12 +353,12 @@ static void test_static_rest(void **state)
 static void test_stick_slip(void **state)
 {
     (void)state;
-    struct contact_law law = {&contact_normal_hertz, &contact_damping_none,
-                              &contact_tangential_coulomb,
-                              &contact_rolling_none,
-                              {.E = T1_E, .nu = T1_NU, .rho = T1_RHO,
-                               .mu = T1_MU, .e = 1}};
-    assert_int_equal(contact_coeffs_init(&law.c), SIM_OK);
+    struct contact_law law = {
+        .normal = &contact_normal_hertz, .damping = &contact_damping_none,
+        .tangential = &contact_tangential_coulomb,
+        .rolling = &contact_rolling_none,
+        .c = {.E = T1_E, .nu = T1_NU, .rho = T1_RHO, .mu = T1_MU, .e = 1}};
+    assert_int_equal(contact_law_init(&law), SIM_OK);
     struct contact_geom g = {.n = {0, 0, -1}, .delta = 2e-7, .rstar = T1_R,
                              .mstar = 2.5765e-5, .vt = {1e-2, 0, 0}};
     double h[3] = {0, 0, 0}, hn[3];
@@ -425,16 +431,16 @@ static void test_oblique_impact(void **state)
 
 /* The fused default law (contact_fused.h) against the generic composition
  * of its sub-models, on random contacts, sticking and sliding. */
-static void test_fused_equals_generic(void **state)
+static void fused_equals_generic(const struct contact_damping_ops *damp,
+                                 const struct contact_stiffness_ops *st)
 {
-    (void)state;
-    struct contact_law law = {&contact_normal_hertz,
-                              &contact_damping_restitution,
-                              &contact_tangential_coulomb,
-                              &contact_rolling_none,
-                              {.E = T1_E, .nu = T1_NU, .rho = T1_RHO,
-                               .mu = T1_MU, .e = T1_E_REST}};
-    assert_int_equal(contact_coeffs_init(&law.c), SIM_OK);
+    struct contact_law law = {
+        .normal = &contact_normal_hertz, .damping = damp,
+        .tangential = &contact_tangential_coulomb,
+        .rolling = &contact_rolling_none, .stiffness = st,
+        .c = {.E = T1_E, .nu = T1_NU, .rho = T1_RHO, .mu = 0.5,
+              .e = 0.6}};
+    assert_int_equal(contact_law_init(&law), SIM_OK);
     assert_true(contact_law_is_fused(&law));
     unsigned seed = 12345;
     int slid = 0, stuck = 0;
@@ -462,21 +468,48 @@ static void test_fused_equals_generic(void **state)
         double h1[3], h2[3];
         contact_eval(&law, &g, h, 1e-6, h1, &r1);
         contact_eval_fused(&law, &g, h, 1e-6, h2, &r2);
-        double fs = fabs(r1.fn) + 1e-300;
+        /* force scale: |F_n| may be a near cancellation of the elastic
+         * force and the dashpot (kn delta ~ 1.5 F_el) */
+        double fs = fabs(r1.fn) + r1.kn * g.delta;
+        double hs = sqrt(h1[0] * h1[0] + h1[1] * h1[1] + h1[2] * h1[2]);
         for (int a = 0; a < 3; a++) {
             assert_true(fabs(r1.f[a] - r2.f[a]) <= 1e-12 * fs);
             assert_true(fabs(r1.ft[a] - r2.ft[a]) <= 1e-12 * fs);
-            assert_true(fabs(h1[a] - h2[a]) <= 1e-12 * (fabs(h1[a]) + 1e-15));
+            /* relative to |h| (a component may cancel to ~0); the slider's
+             * rescaling amplifies the rounding of eta^t a little */
+            assert_true(fabs(h1[a] - h2[a]) <= 1e-11 * (hs + 1e-15));
         }
         assert_true(fabs(r1.kn - r2.kn) <= 1e-12 * r1.kn);
         double ftm = sqrt(r1.ft[0] * r1.ft[0] + r1.ft[1] * r1.ft[1]
                           + r1.ft[2] * r1.ft[2]);
-        if (ftm >= T1_MU * fabs(r1.fn) * (1 - 1e-9))
+        if (ftm >= law.c.mu * fabs(r1.fn) * (1 - 1e-9))
             slid++;
         else
             stuck++;
     }
+    printf("  %s, %s: %d sliding, %d sticking\n", damp->name, st->name, slid,
+           stuck);
     assert_true(slid > 100 && stuck > 100);
+}
+
+static void test_fused_equals_generic(void **state)
+{
+    (void)state;
+    const struct contact_damping_ops *damp[] = {
+        &contact_damping_restitution, &contact_damping_xie2025,
+        &contact_damping_tsuji};
+    for (int k = 0; k < 3; k++)
+        for (int s = 0; contact_stiffness_table[s]; s++)
+            fused_equals_generic(damp[k], contact_stiffness_table[s]);
+    /* everything else takes the generic path */
+    struct contact_law law = {
+        .normal = &contact_normal_hertz, .damping = &contact_damping_tsuji,
+        .tangential = &contact_tangential_coulomb,
+        .rolling = &contact_rolling_none,
+        .twisting = &contact_twisting_viscous};
+    assert_false(contact_law_is_fused(&law));
+    law.twisting = NULL, law.damping = &contact_damping_restitution_constant;
+    assert_false(contact_law_is_fused(&law));
 }
 
 int main(void)

@@ -36,7 +36,7 @@ static inline int th_law(struct dem *d, const struct contact_normal_ops *n,
     d->law.c.rho = T1_RHO;
     d->law.c.mu = mu;
     d->law.c.e = e;
-    return contact_coeffs_init(&d->law.c);
+    return contact_law_init(&d->law);
 }
 
 /* n grains of radius T1_R at rest at the origin; the caller places them. */

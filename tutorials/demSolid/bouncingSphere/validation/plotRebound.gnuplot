@@ -5,8 +5,9 @@
 #          overlap during the contact);
 #   right: normal velocity of the dropped bead and separation speed of the
 #          pair, with the impact speed 0.5 m/s and the rebound e v = 0.45 m/s
-#          of the set restitution e = 0.9 (Hertz law with the damping of
-#          A0-09: e = 0.891, E2-04 allows 5 %); the key gives the measured e.
+#          of the set restitution e = 0.9 (Hertz law with the default
+#          damping restitution, exact: A0-22, E2-04 allows 0.5 %); the key
+#          gives the measured e.
 f = 'postProcessing/beads/0/grainState.dat'
 R = 0.00135; v0 = 0.5; e = 0.9
 # measured e from the last row (both contacts are over by 2.2 ms)
