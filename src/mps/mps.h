@@ -143,7 +143,7 @@ struct mps_solver {
     struct mps_particles P;
     struct mps_settings S;
     double dp;
-    struct mps_lattice Ln, Lg, Ll;  /* per operator radius               */
+    struct pop_lattice Ln, Lg, Ll;  /* per operator radius               */
     double re_max;                  /* largest operator radius [m]       */
     double r_list;                  /* neighbour-list radius (+ skin)    */
     double *x_ref;                  /* positions at the last list build  */
