@@ -37,6 +37,7 @@
 
 #include <stdint.h>
 
+#include "core/select.h"
 #include "linsolve/linsolve.h"
 #include "particles/motion/motion.h"
 #include "mps/operators.h"
@@ -232,6 +233,9 @@ void mps_request_rebuild(struct mps_solver *s);
 
 /* Largest stable dt: min(maxCo dp/|u|max, 0.2 dp^2/nu); |u|max includes
  * sqrt(2 g H) of the fluid column when u = 0 (first step). */
+/* The model choices of system/mpsSchemes (-listModels; core/select.h). */
+extern const struct model_choice mps_choices[];
+
 double mps_propose_dt(const struct mps_solver *s, double max_co);
 
 /* Pre-run checks; the message says what to change. co_limit: maxCo. */
