@@ -9,16 +9,6 @@
 #include "core/error.h"
 #include "core/log.h"
 
-const void *model_find(const void *const *table, const char *name)
-{
-    for (int i = 0; table[i]; i++) {
-        const struct model_head *h = table[i];
-        if (strcmp(h->name, name) == 0)
-            return h;
-    }
-    return NULL;
-}
-
 int model_select(const struct dict *d, const char *key, const char *category,
                  const void *const *table, const char *def, const void **out)
 {
@@ -30,25 +20,10 @@ int model_select(const struct dict *d, const char *key, const char *category,
 
     const struct model_head *h = model_find(table, name);
     if (!h) {
-        char valid[1024] = "";
-        size_t used = 0;
-        for (int i = 0; table[i] && used < sizeof valid - 64; i++) {
-            const struct model_head *m = table[i];
-            used += snprintf(valid + used, sizeof valid - used, " %s", m->name);
-        }
-        const char *cand[64];
-        int nc = 0;
-        while (nc < 64 && table[nc]) {
-            cand[nc] = ((const struct model_head *)table[nc])->name;
-            nc++;
-        }
-        const char *best = dict_suggest(name, cand, nc);
-        char hint[128] = "";
-        if (best)
-            snprintf(hint, sizeof hint, " (did you mean '%s'?)", best);
-        return dict_error(d, key, SIM_ERR_DICT,
-                          "unknown %s '%s'; valid:%s%s", category, name,
-                          valid, hint);
+        char msg[1400];
+        return dict_error(d, key, SIM_ERR_DICT, "%s",
+                          model_unknown(table, category, name, msg,
+                                        sizeof msg));
     }
     if (h->reference && h->reference[0])
         log_info("Selecting %s %s (%s)", category, h->name, h->reference);
@@ -56,4 +31,27 @@ int model_select(const struct dict *d, const char *key, const char *category,
         log_info("Selecting %s %s", category, h->name);
     *out = h;
     return SIM_OK;
+}
+
+int model_select_index(const struct dict *d, const char *key,
+                       const char *category, const void *const *table,
+                       const char *def, int *index)
+{
+    const void *m;
+    TRY(model_select(d, key, category, table, def, &m));
+    for (int i = 0; table[i]; i++)
+        if (table[i] == m)
+            *index = i;
+    return SIM_OK;
+}
+
+void model_choices_print(const struct model_choice *list, const char *file,
+                         const char *prefix)
+{
+    for (; list->key; list++)
+        for (int i = 0; list->table[i]; i++) {
+            const struct model_head *h = list->table[i];
+            printf("%s %s%s %s\n", file ? file : list->file,
+                   prefix ? prefix : "", list->key, h->name);
+        }
 }

@@ -61,16 +61,38 @@
 #include "core/dict.h"
 #include "core/error.h"
 #include "core/log.h"
+#include "core/select.h"
 #include "coupling/drag/drag.h"
+
+/* The choices without ops (core/select.h), in enum order. */
+static const struct model_head model_a = {
+    "A", "Xie et al. 2025 eqs. 1-2, 12, 34" };
+static const struct model_head model_b = {
+    "B", "Xie et al. 2025 eqs. 3-5, 13, 35" };
+static const struct model_head *const model_table[] = {
+    &model_a, &model_b, NULL };
+static const struct model_head div_intrinsic = {
+    "intrinsic", "Xie et al. 2025 eq. 13 as printed, A0-04 (a)" };
+static const struct model_head div_superficial = {
+    "superficial", "div(eps u*), A0-04 (b)" };
+static const struct model_head *const divergence_table[] = {
+    &div_intrinsic, &div_superficial, NULL };
+
+#define TABLE(t) ((const void *const *)(t))
+
+const struct model_choice coupling_choices[] = {
+    { "system/couplingDict", "model", TABLE(model_table) },
+    { "system/couplingDict", "ppeDivergence", TABLE(divergence_table) },
+    { "system/couplingDict", "dragModel", TABLE(drag_table) },
+    { NULL, NULL, NULL }
+};
 
 int coupling_settings_read(const struct dict *d, struct coupling_settings *s)
 {
-    static const char *const models[] = { "A", "B", NULL };
     int idx;
-    TRY(dict_get_word_or(d, "model", models, COUPLING_MODEL_B, &idx));
+    TRY(model_select_index(d, "model", "coupling model", TABLE(model_table),
+                           "B", &idx));
     s->model = (enum coupling_model)idx;
-    log_info("Selecting coupling model %s (Xie et al. 2025 %s)", models[idx],
-             idx == COUPLING_MODEL_A ? "eqs. 1-2, 12, 34" : "eqs. 3-5, 13, 35");
     TRY(drag_select(d, &s->drag));
     TRY(dict_get_scalar_or(d, "kernelRadius", 4.1, &s->radius));
     if (!(s->radius > 0) || !isfinite(s->radius))
@@ -101,9 +123,11 @@ int coupling_settings_read(const struct dict *d, struct coupling_settings *s)
      * and wall particles of weight 1 in the MPS sums (A0-03; their
      * porosity still scales their PPE rows). The paper's literal forms
      * stay selectable: ppeDivergence intrinsic, porousWalls yes. */
-    static const char *const divs[] = { "intrinsic", "superficial", NULL };
-    TRY(dict_get_word_or(d, "ppeDivergence", divs,
-                         s->model == COUPLING_MODEL_B, &s->superficial));
+    TRY(model_select_index(d, "ppeDivergence", "PPE divergence",
+                           TABLE(divergence_table),
+                           s->model == COUPLING_MODEL_B ? "superficial"
+                                                        : "intrinsic",
+                           &s->superficial));
     if (s->superficial && s->model == COUPLING_MODEL_A)
         return dict_error(d, "ppeDivergence", SIM_ERR_DICT,
                           "ppeDivergence superficial applies to model B only "

@@ -46,6 +46,8 @@
 #ifndef MPSDEM_COUPLING_MODELS_H
 #define MPSDEM_COUPLING_MODELS_H
 
+#include "core/select.h"
+
 #include <stdint.h>
 
 struct dict;
@@ -74,6 +76,9 @@ struct coupling_settings {
 };
 
 /* Read the entries above; errors cite couplingDict's file and line. */
+/* The model choices of system/couplingDict (-listModels). */
+extern const struct model_choice coupling_choices[];
+
 int coupling_settings_read(const struct dict *d,
                            struct coupling_settings *s);
 

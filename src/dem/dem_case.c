@@ -50,6 +50,20 @@ static int read_material(const struct dict *p, struct contact_coeffs *c)
     return at_key(p, key, rc);
 }
 
+#define TABLE(t) ((const void *const *)(t))
+
+const struct model_choice dem_choices[] = {
+    { "constant/demProperties", "contact/normal", TABLE(contact_normal_table) },
+    { "constant/demProperties", "contact/damping",
+      TABLE(contact_damping_table) },
+    { "constant/demProperties", "contact/tangential",
+      TABLE(contact_tangential_table) },
+    { "constant/demProperties", "contact/rolling",
+      TABLE(contact_rolling_table) },
+    { "system/demSolution", "integrator", TABLE(dem_integrator_table) },
+    { NULL, NULL, NULL }
+};
+
 int dem_read_properties(const struct dict *props, struct dem *d)
 {
     struct contact_law *law = &d->law;

@@ -9,6 +9,7 @@
 #ifndef MPSDEM_DEM_CASE_H
 #define MPSDEM_DEM_CASE_H
 
+#include "core/select.h"
 #include "dem/dem.h"
 #include "dem/integrators/integrator.h"
 
@@ -26,6 +27,10 @@ struct dem_solution {
 
 /* constant/demProperties -> d->law. Errors name file:line:key. */
 int dem_read_properties(const struct dict *props, struct dem *d);
+
+/* The model choices of constant/demProperties and system/demSolution
+ * (-listModels; core/select.h). */
+extern const struct model_choice dem_choices[];
 
 /* system/demSolution. Needs d->rmax set (skin default) — call after the
  * grains are read. */

@@ -20,27 +20,6 @@
 const struct solver_ops *const linsolve_solvers[] = {
     &solver_pcg, &solver_bicgstab, &solver_cholmod, &solver_hypre, NULL};
 
-/* Like find() of core/select.h, which lives in an object file with
- * model_select() and so would pull the dictionary code into programs that
- * never read one. */
-static const void *find(const void *const *table, const char *name)
-{
-    for (int i = 0; table[i]; i++)
-        if (strcmp(((const struct model_head *)table[i])->name, name) == 0)
-            return table[i];
-    return NULL;
-}
-
-static void list_names(const void *const *table, char *buf, size_t len)
-{
-    size_t used = 0;
-    buf[0] = '\0';
-    for (int i = 0; table[i] && used + 1 < len; i++) {
-        const struct model_head *h = table[i];
-        used += (size_t)snprintf(buf + used, len - used, " %s", h->name);
-    }
-}
-
 int linsolve_check_combination(const struct solver_ops *so,
                                const struct precond_ops *po)
 {
@@ -60,23 +39,30 @@ int linsolve_check_combination(const struct solver_ops *so,
 int linsolve_create_named(const char *solver, const char *precond, double tol,
                           int maxiter, struct linsolve **out)
 {
-    char valid[256];
+    char msg[1400];
     *out = NULL;
-    const struct solver_ops *so =
-        find((const void *const *)linsolve_solvers, solver ? solver : "");
-    if (!so) {
-        list_names((const void *const *)linsolve_solvers, valid, sizeof valid);
-        return sim_error(SIM_ERR_INPUT, "unknown linear solver '%s'; valid:%s",
-                         solver ? solver : "(null)", valid);
-    }
-    const struct precond_ops *po = find(
-        (const void *const *)linsolve_preconditioners, precond ? precond : "");
-    if (!po) {
-        list_names((const void *const *)linsolve_preconditioners, valid,
-                   sizeof valid);
-        return sim_error(SIM_ERR_INPUT, "unknown preconditioner '%s'; valid:%s",
-                         precond ? precond : "(null)", valid);
-    }
+    const void *const *st = (const void *const *)linsolve_solvers;
+    const void *const *pt = (const void *const *)linsolve_preconditioners;
+    const struct solver_ops *so = model_find(st, solver ? solver : "");
+    if (!so)
+        return sim_error(SIM_ERR_INPUT, "%s",
+                         model_unknown(st, "linear solver",
+                                       solver ? solver : "(null)", msg,
+                                       sizeof msg));
+    const struct precond_ops *po = model_find(pt, precond ? precond : "");
+    if (!po)
+        return sim_error(SIM_ERR_INPUT, "%s",
+                         model_unknown(pt, "preconditioner",
+                                       precond ? precond : "(null)", msg,
+                                       sizeof msg));
+    return linsolve_create_ops(so, po, tol, maxiter, out);
+}
+
+int linsolve_create_ops(const struct solver_ops *so,
+                        const struct precond_ops *po, double tol, int maxiter,
+                        struct linsolve **out)
+{
+    *out = NULL;
     if (!(tol > 0.0 && tol < 1.0))
         return sim_error(SIM_ERR_INPUT, "linear solver tolerance %g is not in "
                          "(0, 1)", tol);

@@ -34,6 +34,8 @@
 
 #include <stdint.h>
 
+#include "core/select.h"
+
 struct dict;
 
 struct csr_matrix {           /* square, rows in any order of columns (not necessarily sorted) */
@@ -49,6 +51,8 @@ struct linsolve;              /* opaque: a selected, configured solver with its 
  * `tolerance` (relative on ||b - Ax||_2/||b||_2, default 1e-8), `maxIter` (default 1000), `warmStart` (yes) from d
  * (e.g. the PPE sub-dictionary of system/mpsSolution); logs "Selecting ...". */
 int  linsolve_create(const struct dict *d, struct linsolve **out);
+/* The choices linsolve_create reads (keys relative to its dictionary). */
+extern const struct model_choice linsolve_choices[];
 /* Same from plain values, for tests and tools. */
 int  linsolve_create_named(const char *solver, const char *precond, double tol, int maxiter, struct linsolve **out);
 /* Solve A x = b. x holds the initial guess on entry (warm start) — ignored (zeroed) when warmStart is off.

@@ -23,6 +23,12 @@
 #include "core/select.h"
 #include "linsolve/linsolve_impl.h"
 
+const struct model_choice linsolve_choices[] = {
+    { "", "solver", (const void *const *)linsolve_solvers },
+    { "", "preconditioner", (const void *const *)linsolve_preconditioners },
+    { NULL, NULL, NULL }
+};
+
 int linsolve_create(const struct dict *d, struct linsolve **out)
 {
     const void *so, *po;
@@ -53,9 +59,7 @@ int linsolve_create(const struct dict *d, struct linsolve **out)
         snprintf(msg, sizeof msg, "%s", sim_error_message());
         return dict_error(d, "preconditioner", SIM_ERR_DICT, "%s", msg);
     }
-    int rc = linsolve_create_named(sops->name,
-                                   ((const struct precond_ops *)po)->name, tol,
-                                   (int)maxiter, out);
+    int rc = linsolve_create_ops(sops, po, tol, (int)maxiter, out);
     if (rc != SIM_OK) {
         snprintf(msg, sizeof msg, "%s", sim_error_message());
         return dict_error(d, "solver",

@@ -166,6 +166,12 @@ CSR_ROW_DOT(csr_row_dot, double)
 CSR_ROW_DOT(csr_row_dot_f, float)
 
 /* Check the preconditioner and solver combination (messages name both). */
+/* linsolve_create_named() with the tables' entries (the dictionary
+ * front end has selected them already). */
+int linsolve_create_ops(const struct solver_ops *so,
+                        const struct precond_ops *po, double tol, int maxiter,
+                        struct linsolve **out);
+
 int linsolve_check_combination(const struct solver_ops *so,
                                const struct precond_ops *po);
 

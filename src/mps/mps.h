@@ -37,6 +37,7 @@
 
 #include <stdint.h>
 
+#include "core/select.h"
 #include "linsolve/linsolve.h"
 #include "particles/motion/motion.h"
 #include "mps/operators.h"
@@ -143,7 +144,7 @@ struct mps_solver {
     struct mps_particles P;
     struct mps_settings S;
     double dp;
-    struct mps_lattice Ln, Lg, Ll;  /* per operator radius               */
+    struct pop_lattice Ln, Lg, Ll;  /* per operator radius               */
     double re_max;                  /* largest operator radius [m]       */
     double r_list;                  /* neighbour-list radius (+ skin)    */
     double *x_ref;                  /* positions at the last list build  */
@@ -232,6 +233,9 @@ void mps_request_rebuild(struct mps_solver *s);
 
 /* Largest stable dt: min(maxCo dp/|u|max, 0.2 dp^2/nu); |u|max includes
  * sqrt(2 g H) of the fluid column when u = 0 (first step). */
+/* The model choices of system/mpsSchemes (-listModels; core/select.h). */
+extern const struct model_choice mps_choices[];
+
 double mps_propose_dt(const struct mps_solver *s, double max_co);
 
 /* Pre-run checks; the message says what to change. co_limit: maxCo. */

@@ -22,6 +22,52 @@
 #include "mps/mps.h"
 #include "mps/stabiliser/stabiliser.h"
 
+/* The choices without ops (core/select.h), in the order of their enums
+ * in mps.h. */
+static const struct model_head grad_symmetric = {
+    "symmetric", "Xie et al. 2025 eq. 8, p_i + p_j" };
+static const struct model_head grad_minimum = {
+    "minimum", "Koshizuka & Oka 1996 eq. 11, p_j - p_min" };
+static const struct model_head grad_corrected = {
+    "corrected", "Khayyer & Gotoh 2011 corrective matrix" };
+static const struct model_head *const gradient_table[] = {
+    &grad_symmetric, &grad_minimum, &grad_corrected, NULL };
+
+static const struct model_head porous_neighbour = {
+    "neighbour", "Xie et al. 2025 eq. 10, weight 1/eps_j" };
+static const struct model_head porous_symmetric = {
+    "symmetric", "doc/theory.md A.4, weight 2/(eps_i + eps_j)" };
+static const struct model_head *const porous_table[] = {
+    &porous_neighbour, &porous_symmetric, NULL };
+
+static const struct model_head dummy_wall = {
+    "nearestWall", "doc/theory.md A.9" };
+static const struct model_head dummy_zero = {
+    "zero", "Koshizuka et al. 1998" };
+static const struct model_head dummy_extrapolated = {
+    "extrapolated", "Adami, Hu & Adams 2012 eq. 27" };
+static const struct model_head *const dummy_table[] = {
+    &dummy_wall, &dummy_zero, &dummy_extrapolated, NULL };
+
+static const struct model_head fs_zero = { "zero", "doc/theory.md A.4" };
+static const struct model_head fs_extrapolated = {
+    "extrapolated", "Gibou et al. 2002 eq. 8, p = 0 dp/2 outside" };
+static const struct model_head *const fs_pressure_table[] = {
+    &fs_zero, &fs_extrapolated, NULL };
+
+#define TABLE(t) ((const void *const *)(t))
+
+const struct model_choice mps_choices[] = {
+    { "system/mpsSchemes", "kernel", TABLE(mps_kernel_table) },
+    { "system/mpsSchemes", "pressureGradient", TABLE(gradient_table) },
+    { "system/mpsSchemes", "porousLaplacian", TABLE(porous_table) },
+    { "system/mpsSchemes", "freeSurface/pressure", TABLE(fs_pressure_table) },
+    { "system/mpsSchemes", "collision", TABLE(mps_collision_table) },
+    { "system/mpsSchemes", "shifting", TABLE(mps_shifting_table) },
+    { "system/mpsSchemes", "dummyPressure", TABLE(dummy_table) },
+    { NULL, NULL, NULL }
+};
+
 static const int DIM_RHO[7] = { 1, -3, 0, 0, 0, 0, 0 };
 static const int DIM_NU[7] = { 0, 2, -1, 0, 0, 0, 0 };
 
@@ -74,9 +120,10 @@ static int read_free_surface(const struct dict *d, struct mps_settings *S)
     TRY(dict_get_scalar_or(fs, "vectorDensityLimit", S->fs_n_max,
                            &S->fs_n_max));
     TRY(positive(fs, "vectorDensityLimit", S->fs_n_max, 0, 2));
-    static const char *const kinds[] = { "zero", "extrapolated", NULL };
-    TRY(dict_get_word_or(fs, "pressure", kinds, S->fs_pressure,
-                         &S->fs_pressure));
+    TRY(model_select_index(fs, "pressure", "free-surface pressure",
+                           TABLE(fs_pressure_table),
+                           fs_pressure_table[S->fs_pressure]->name,
+                           &S->fs_pressure));
     TRY(dict_get_scalar_or(fs, "betaPorous", S->beta_porous,
                            &S->beta_porous));
     TRY(positive(fs, "betaPorous", S->beta_porous, 0, 1));
@@ -88,7 +135,7 @@ static int read_stabilisers(const struct dict *d, struct mps_settings *S)
     const void *m;
     const struct dict *c;
     TRY(model_select(d, "collision", "collision model",
-                     (const void *const *)mps_collision_table, "none", &m));
+                     TABLE(mps_collision_table), "none", &m));
     S->collision = m;
     TRY(dict_find_dict(d, "lee2011Coeffs", &c));
     if (c) {
@@ -100,7 +147,7 @@ static int read_stabilisers(const struct dict *d, struct mps_settings *S)
         TRY(positive(c, "restitution", S->collision_restitution + 1, 0, 2));
     }
     TRY(model_select(d, "shifting", "particle shifting",
-                     (const void *const *)mps_shifting_table, "none", &m));
+                     TABLE(mps_shifting_table), "none", &m));
     S->shifting = m;
     TRY(dict_find_dict(d, S->shifting == &mps_shifting_lind2012
                            ? "lind2012Coeffs" : "xu2009Coeffs", &c));
@@ -115,20 +162,15 @@ static int read_stabilisers(const struct dict *d, struct mps_settings *S)
 static int read_schemes(const struct dict *d, struct mps_settings *S)
 {
     const void *k;
-    static const char *const grads[] = { "symmetric", "minimum", "corrected",
-                                         NULL };
-    static const char *const dummies[] = { "nearestWall", "zero",
-                                           "extrapolated", NULL };
-    int idx;
-    TRY(model_select(d, "kernel", "MPS kernel",
-                     (const void *const *)mps_kernel_table, "zhang2014", &k));
+    TRY(model_select(d, "kernel", "MPS kernel", TABLE(mps_kernel_table),
+                     "zhang2014", &k));
     S->kernel = k;
     TRY(read_radii(d, S));
-    TRY(dict_get_word_or(d, "pressureGradient", grads, 0, &idx));
-    S->gradient = idx;
-    static const char *const porous[] = { "neighbour", "symmetric", NULL };
-    TRY(dict_get_word_or(d, "porousLaplacian", porous, 0, &idx));
-    S->porous_symmetric = idx;
+    TRY(model_select_index(d, "pressureGradient", "pressure gradient",
+                           TABLE(gradient_table), "symmetric", &S->gradient));
+    TRY(model_select_index(d, "porousLaplacian", "porous Laplacian",
+                           TABLE(porous_table), "neighbour",
+                           &S->porous_symmetric));
     TRY(dict_get_bool_or(d, "predictor", S->predictor, &S->predictor));
     TRY(dict_get_bool_or(d, "clipNegativePressure", S->clip_negative,
                          &S->clip_negative));
@@ -138,8 +180,9 @@ static int read_schemes(const struct dict *d, struct mps_settings *S)
                           "of eq. 12) must lie in [0, 1], not %g", S->gamma);
     TRY(read_free_surface(d, S));
     TRY(read_stabilisers(d, S));
-    TRY(dict_get_word_or(d, "dummyPressure", dummies, 0, &idx));
-    S->dummy_pressure = idx;
+    TRY(model_select_index(d, "dummyPressure", "dummy pressure",
+                           TABLE(dummy_table), "nearestWall",
+                           &S->dummy_pressure));
     long r;
     TRY(dict_get_label_or(d, "renumberInterval", S->renumber_interval, &r));
     if (r < 0 || r > 1000000)

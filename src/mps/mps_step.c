@@ -23,9 +23,9 @@
 #include <string.h>
 
 #include "core/error.h"
-#include "mps/gradient_corrected.h"
 #include "mps/mps.h"
 #include "mps/mps_impl.h"
+#include "mps/operators.h"
 #include "mps/stabiliser/stabiliser.h"
 
 static void predict(struct mps_solver *s, double dt)

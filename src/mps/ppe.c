@@ -37,6 +37,7 @@
 #include "mps/mps.h"
 #include "mps/mps_impl.h"
 #include "mps/surface_pressure.h"
+#include "particles/operators/matrix.h"
 
 static int grow_matrix(struct mps_solver *s, int64_t nnz)
 {
@@ -91,19 +92,9 @@ static int assemble(struct mps_solver *s, int m)
     const double c = 2.0 * P->dim / (s->Ll.n0 * s->Ll.lambda);
     const int sym = s->S.porous_symmetric;
     int64_t *rp = s->A.rowptr;
-    /* pass 1: row lengths (diagonal + unknown neighbours) */
-#pragma omp parallel for schedule(static)
-    for (int i = 0; i < P->n; i++) {
-        if (s->unk[i] < 0)
-            continue;
-        int64_t len = 1;
-        for (int64_t k = nl->start[i]; k < nl->start[i + 1]; k++)
-            len += w[k] > 0 && s->unk[nl->j[k]] >= 0;
-        rp[s->unk[i] + 1] = len;
-    }
-    rp[0] = 0;
-    for (int r = 0; r < m; r++)
-        rp[r + 1] += rp[r];
+    /* pass 1: row lengths (diagonal + unknown neighbours); dummies are
+     * never unknowns, so the pattern needs no type test */
+    pop_matrix_rowptr(nl, P->n, w, s->unk, m, rp);
     TRY(grow_matrix(s, rp[m]));
     s->A.n = m;
     s->A.nnz = rp[m];

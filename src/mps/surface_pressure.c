@@ -16,8 +16,8 @@
  *   p_s = -(dp/2) n . <grad p>_s,   n = -F_s/|F_s|   (eq. 15)
  *   <grad p>_s = C_s sum_j (p_j - p_s) r_sj w_sj / (|r_sj|^2 eps_j)
  *
- * with the corrected gradient (gradient_corrected.c) of the neighbours'
- * pressure of the previous step. p_s appears on both sides; it is solved
+ * with the corrected gradient (src/particles/operators/gradient_corrected.c)
+ * of the neighbours' pressure of the previous step. p_s appears on both sides; it is solved
  * for, p_s = a / (1 + b) with a = -(dp/2) n.C sum p_j r w/r^2 and
  * b = -(dp/2) n.C sum r w/r^2, because the explicit update (p_s of the last
  * step on the right) amplifies itself by |b| per step, and |b| exceeds 1
@@ -29,9 +29,9 @@
  */
 #include <math.h>
 
-#include "mps/gradient_corrected.h"
 #include "mps/mps.h"
 #include "mps/mps_impl.h"
+#include "particles/operators/gradient_corrected.h"
 
 static double surface_value(const struct mps_solver *s, int i)
 {
@@ -64,8 +64,8 @@ static double surface_value(const struct mps_solver *s, int i)
         }
     }
     double fm = sqrt(F[0] * F[0] + F[1] * F[1] + F[2] * F[2]), cv[3], cs[3];
-    if (!(fm > 0) || !mps_moment_solve(P->dim, m, v, cv)
-        || !mps_moment_solve(P->dim, m, S, cs))
+    if (!(fm > 0) || !pop_moment_solve(P->dim, m, v, cv)
+        || !pop_moment_solve(P->dim, m, S, cs))
         return 0;
     double a = 0, b = 0, half = 0.5 * s->dp;
     for (int q = 0; q < 3; q++) {     /* n = -F/|F| */

@@ -1,8 +1,9 @@
 /*
  * timestep.c — time-step limits, pre-run stability checks and the NaN
- * guard.
+ * guard of the MPS solver; the limits themselves are shared
+ * (src/particles/operators/checks.c):
  *
- *   Courant (A.8 eq. 37):   dt <= C dp / |u|_max
+ *   Courant (A.8 eq. 37):   dt <= C dp / |u|_max     (fluid particles)
  *   acceleration:           dt <= C sqrt(dp / |g|)   (the first steps, when
  *                                                     u is still ~0)
  *   viscous diffusion [P]:  dt <= 0.2 dp^2 / nu      (explicit Laplacian)
@@ -20,18 +21,7 @@
 #include "core/error.h"
 #include "core/log.h"
 #include "mps/mps.h"
-
-static double umax_fluid(const struct mps_particles *P)
-{
-    double m = 0;
-#pragma omp parallel for reduction(max : m)
-    for (int i = 0; i < P->n; i++)
-        if (P->type[i] == MPS_FLUID) {
-            const double *u = P->u + 3 * i;
-            m = fmax(m, u[0] * u[0] + u[1] * u[1] + u[2] * u[2]);
-        }
-    return sqrt(m);
-}
+#include "particles/operators/checks.h"
 
 static double gnorm(const struct mps_settings *S)
 {
@@ -40,13 +30,8 @@ static double gnorm(const struct mps_settings *S)
 
 double mps_propose_dt(const struct mps_solver *s, double max_co)
 {
-    double dt = 0.2 * s->dp * s->dp / fmax(s->S.nu, 1e-300);
-    double u = umax_fluid(&s->P), g = gnorm(&s->S);
-    if (u > 0)
-        dt = fmin(dt, max_co * s->dp / u);
-    if (g > 0)
-        dt = fmin(dt, max_co * sqrt(s->dp / g));
-    return dt;
+    double u = pop_max_norm3(s->P.n, s->P.u, s->P.type, MPS_FLUID);
+    return pop_stable_dt(s->dp, s->S.nu, u, gnorm(&s->S), max_co);
 }
 
 static double fluid_height(const struct mps_particles *P)
@@ -148,20 +133,8 @@ int mps_check_setup(const struct mps_solver *s, double dt, int adjustable,
 int mps_check_finite(const struct mps_solver *s)
 {
     const struct mps_particles *P = &s->P;
-    int bad = -1;
-    const char *field = NULL;
-    for (int i = 0; i < P->n && bad < 0; i++) {
-        if (!isfinite(P->p[i]))
-            field = "pressure";
-        else if (!isfinite(P->u[3 * i]) || !isfinite(P->u[3 * i + 1])
-                 || !isfinite(P->u[3 * i + 2]))
-            field = "velocity";
-        else if (!isfinite(P->x[3 * i]) || !isfinite(P->x[3 * i + 1])
-                 || !isfinite(P->x[3 * i + 2]))
-            field = "position";
-        if (field)
-            bad = i;
-    }
+    const char *field;
+    int bad = pop_first_nonfinite(P->n, P->p, P->u, P->x, &field);
     if (bad < 0)
         return SIM_OK;
     static const char *tn[] = { "fluid", "wall", "dummy" };

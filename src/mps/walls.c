@@ -39,6 +39,9 @@
  *     While such patches exist, a dummy's partner is searched in its own
  *     patch only: a gate's dummy must not take the pressure of the floor
  *     it leaves behind.
+ * The partner search and the extrapolation are the shared ones
+ * (src/particles/operators/walls.c); this file says which particles use
+ * them and when.
  */
 #include <math.h>
 #include <string.h>
@@ -47,6 +50,7 @@
 #include "core/log.h"
 #include "mps/mps.h"
 #include "mps/mps_impl.h"
+#include "particles/operators/walls.h"
 
 /* Patch k moves or is removed at some time. */
 static int patch_dynamic(const struct mps_solver *s, int k)
@@ -58,88 +62,34 @@ static int patch_dynamic(const struct mps_solver *s, int k)
     return wall_motion_moves(m) || isfinite(m->remove_at);
 }
 
+/* A dummy of a moving or removed patch leans on its own patch only. */
+static int same_patch_if_dynamic(const void *ctx, int i, int j)
+{
+    const struct mps_solver *s = ctx;
+    const struct mps_particles *P = &s->P;
+    return !(P->patch[j] != P->patch[i] && s->walls_move
+             && (patch_dynamic(s, P->patch[i])
+                 || patch_dynamic(s, P->patch[j])));
+}
+
 int mps_find_partners(struct mps_solver *s)
 {
     struct mps_particles *P = &s->P;
-    const struct neighbour_list *nl = &s->nl;
-    int orphans = 0;
-    for (int i = 0; i < P->n; i++) {
-        P->partner[i] = -1;
-        if (P->type[i] != MPS_DUMMY)
-            continue;
-        double best = INFINITY;
-        for (int64_t k = nl->start[i]; k < nl->start[i + 1]; k++) {
-            int j = nl->j[k];
-            if (P->type[j] != MPS_WALL)
-                continue;
-            if (P->patch[j] != P->patch[i] && s->walls_move
-                && (patch_dynamic(s, P->patch[i])
-                    || patch_dynamic(s, P->patch[j])))
-                continue;
-            /* ties (corners) go to the smaller id: independent of order */
-            double r = nl->r[k];
-            if (r < best - 1e-9 * s->dp
-                || (r < best + 1e-9 * s->dp && P->partner[i] >= 0
-                    && P->id[j] < P->id[P->partner[i]])) {
-                best = fmin(best, r);
-                P->partner[i] = j;
-            }
-        }
-        orphans += P->partner[i] < 0;
-    }
-    /* Deep corner dummies are farther than r_e from every wall particle:
-     * they borrow the partner of their nearest dummy that has one. */
-    for (int pass = 0; pass < 4 && orphans; pass++) {
-        orphans = 0;
-        for (int i = 0; i < P->n; i++) {
-            if (P->type[i] != MPS_DUMMY || P->partner[i] >= 0)
-                continue;
-            double best = INFINITY;
-            for (int64_t k = nl->start[i]; k < nl->start[i + 1]; k++) {
-                int j = nl->j[k];
-                if (P->patch[j] != P->patch[i] && s->walls_move
-                    && (patch_dynamic(s, P->patch[i])
-                        || patch_dynamic(s, P->patch[j])))
-                    continue;
-                if (P->type[j] == MPS_DUMMY && P->partner[j] >= 0
-                    && nl->r[k] < best) {
-                    best = nl->r[k];
-                    P->partner[i] = P->partner[j];
-                }
-            }
-            orphans += P->partner[i] < 0;
-        }
-    }
+    int orphans = pop_wall_partners(&s->nl, P->n, P->type, MPS_DUMMY,
+                                    MPS_WALL, P->id, 1e-9 * s->dp,
+                                    same_patch_if_dynamic, s, P->partner);
     if (orphans)
         log_warn("%d dummy particle(s) have no wall particle within r_e = "
                  "%g m; their pressure stays 0", orphans, s->re_max);
     return SIM_OK;
 }
 
-/* Adami et al. (2012) eq. (27) with a fixed wall: the fluid pressure of the
- * neighbours within the gradient radius, each carried to r_i along the
- * hydrostatic gradient. Returns 0 if i has no fluid neighbour. */
+/* Adami et al. (2012) eq. (27) on the gradient radius. */
 static int extrapolate(const struct mps_solver *s, int i, double *p)
 {
     const struct mps_particles *P = &s->P;
-    const struct neighbour_list *nl = &s->nl;
-    const double rho = s->S.rho, *g = s->S.g;
-    double sw = 0, sp = 0;
-    for (int64_t k = nl->start[i]; k < nl->start[i + 1]; k++) {
-        int j = nl->j[k];
-        double w = s->w_g[k];
-        if (w == 0 || P->type[j] != MPS_FLUID)
-            continue;
-        double pj = P->p[j];
-        for (int q = 0; q < 3; q++)
-            pj += rho * g[q] * (P->x[3 * i + q] - P->x[3 * j + q]);
-        sw += w;
-        sp += w * pj;
-    }
-    if (sw == 0)
-        return 0;
-    *p = sp / sw;
-    return 1;
+    return pop_wall_extrapolate(&s->nl, s->w_g, P->x, P->p, P->type,
+                                MPS_FLUID, s->S.rho, s->S.g, i, p);
 }
 
 void mps_dummy_pressure(struct mps_solver *s)

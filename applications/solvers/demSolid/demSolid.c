@@ -34,6 +34,7 @@
 #include "core/time.h"
 #include "coupling/couple_dem.h"
 #include "coupling/couple_output.h"
+#include "coupling/models.h"
 #include "dem/dem.h"
 #include "dem/dem_case.h"
 #include "dem/functionObjects/dem_fo.h"
@@ -330,8 +331,19 @@ int main(int argc, char **argv)
     static struct solid s;
     int rc;
 
+    const char *list = NULL;
+    const struct app_option opts[] = {
+        { "-listModels", 0, NULL, "print every model choice (dictionary "
+          "key name) and exit", &list },
+        { NULL, 0, NULL, NULL, NULL }
+    };
     app_init(&s.app, "demSolid", "DEM solver: spheres, contact sub-models, "
-             "ARKode or Verlet sub-stepping", argc, argv, NULL, 0);
+             "ARKode or Verlet sub-stepping", argc, argv, opts, 0);
+    if (list) {
+        model_choices_print(dem_choices, NULL, NULL);
+        model_choices_print(coupling_choices, NULL, NULL);
+        return 0;
+    }
     dem_init(&s.d);
     if ((rc = app_lock_case(&s.app)) || (rc = create_time(&s))
         || (rc = create_grains(&s))

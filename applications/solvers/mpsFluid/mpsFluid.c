@@ -37,6 +37,7 @@
 #include "coupling/couple_dem.h"
 #include "coupling/couple_fluid.h"
 #include "coupling/couple_output.h"
+#include "coupling/models.h"
 #include "functionObjects/functionObject.h"
 #include "io/vtu.h"
 #include "functionObjects/mps_functionObjects.h"
@@ -513,9 +514,21 @@ int main(int argc, char **argv)
 {
     static struct fluid f;
     int rc;
+    const char *list = NULL;
+    const struct app_option opts[] = {
+        { "-listModels", 0, NULL, "print every model choice (dictionary "
+          "key name) and exit", &list },
+        { NULL, 0, NULL, NULL, NULL }
+    };
 
     app_init(&f.app, "mpsFluid", "incompressible MPS solver for free-surface "
-             "flows", argc, argv, NULL, 0);
+             "flows", argc, argv, opts, 0);
+    if (list) {
+        model_choices_print(mps_choices, NULL, NULL);
+        model_choices_print(linsolve_choices, "system/mpsSolution", "PPE/");
+        model_choices_print(coupling_choices, NULL, NULL);
+        return 0;
+    }
     if ((rc = app_lock_case(&f.app)) || (rc = create_time(&f))
         || (rc = create_fluid(&f))
         || (rc = create_functions(&f)) || (rc = start_output(&f)))

@@ -28,37 +28,20 @@
 #include "mps/kernel/kernel.h"
 #include "mps/mps.h"
 #include "mps/stabiliser/stabiliser.h"
+#include "particles/operators/operators.h"
 
 #define MAX_SHIFT 0.1   /* [dp] */
 
-/* grad C (and F, eq. 15) of particle i at the current positions. */
+/* grad C (and F, eq. 15) of particle i at the current positions, on the
+ * gradient radius: shifting follows the position update, so the list's
+ * distances and weights are those before it. */
 static void asymmetry(const struct mps_solver *s, int i, double G[3],
                       double F[3])
 {
     const struct mps_particles *P = &s->P;
-    const struct neighbour_list *nl = &s->nl;
-    const double re = s->S.re_grad * s->dp, *ie = P->inv_eps;
-    for (int q = 0; q < 3; q++)
-        G[q] = F[q] = 0;
-    for (int64_t k = nl->start[i]; k < nl->start[i + 1]; k++) {
-        int j = nl->j[k];
-        double d[3], r2 = 0;
-        for (int q = 0; q < 3; q++) {
-            d[q] = P->x[3 * j + q] - P->x[3 * i + q];
-            r2 += d[q] * d[q];
-        }
-        double r = sqrt(r2);
-        if (r == 0 || r >= re)
-            continue;
-        double w = s->S.kernel->w(r, re) * (ie ? ie[j] : 1.0);
-        for (int q = 0; q < 3; q++) {
-            G[q] += w * d[q] / r2;
-            F[q] += w * d[q] / r;
-        }
-    }
-    const double c = P->dim / s->Lg.n0;
-    for (int q = 0; q < 3; q++)
-        G[q] *= c;
+    pop_concentration_gradient(&s->nl, P->x, P->inv_eps, s->S.kernel->w,
+                               s->S.re_grad * s->dp, P->dim / s->Lg.n0, i,
+                               G, F);
 }
 
 static int near_surface(const struct mps_solver *s, int i)

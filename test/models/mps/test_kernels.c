@@ -38,7 +38,7 @@ static void test_properties(void **s)
         }
         /* continuity at r_e */
         assert_true(K->w(re * (1 - 1e-9), re) < 1e-6);
-        struct mps_lattice L;
+        struct pop_lattice L;
         assert_int_equal(mps_lattice_constants(K, 3, re / 2.1, re, &L), 0);
         assert_true(L.n0 > 0);
         assert_true(L.lambda > pow(re / 2.1, 2) && L.lambda < re * re);

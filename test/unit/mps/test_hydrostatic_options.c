@@ -17,7 +17,6 @@
 
 #include "core/log.h"
 #include "linsolve/linsolve.h"
-#include "mps/gradient_corrected.h"
 #include "mps/kernel/kernel.h"
 #include "mps/mps.h"
 #include "mps/operators.h"
@@ -60,7 +59,7 @@ static int check_linear(int dim, int half)
     double *w = malloc(sizeof *w * (size_t)nl.nnz);
     double *g = malloc(sizeof *g * 3 * (size_t)n);
     mps_kernel_zhang2014.weights(nl.r, nl.nnz, re, w);
-    struct mps_lattice L;
+    struct pop_lattice L;
     assert_int_equal(mps_lattice_constants(&mps_kernel_zhang2014, dim, 1.0, re,
                                            &L), 0);
     mps_gradient_corrected(&nl, w, dim, L.n0, x, phi, NULL, NULL, g);

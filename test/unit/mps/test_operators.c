@@ -37,7 +37,7 @@ static void test_lattice_constants(void **s)
     };
     const double dp = 0.0027;
     for (size_t i = 0; i < sizeof t / sizeof *t; i++) {
-        struct mps_lattice L;
+        struct pop_lattice L;
         assert_int_equal(mps_lattice_constants(&mps_kernel_zhang2014, t[i].dim,
                                                dp, t[i].re * dp, &L), 0);
         rel(L.n0, t[i].n0, 1e-6);
@@ -50,7 +50,7 @@ static void test_lattice_constants(void **s)
 static void test_surface_constants(void **s)
 {
     (void)s;
-    struct mps_lattice L;
+    struct pop_lattice L;
     assert_int_equal(mps_lattice_constants(&mps_kernel_zhang2014, 3, 1.0, 2.1,
                                            &L), 0);
     assert_true(fabs(L.f0 - 0.6324) < 1e-4);
@@ -120,7 +120,7 @@ static void test_interior_operators(void **s)
             double re = res[ir] * dp;
             struct lat l;
             lat_make(&l, dim, 5, dp, re, 0);
-            struct mps_lattice L;
+            struct pop_lattice L;
             mps_lattice_constants(&mps_kernel_zhang2014, dim, dp, re, &L);
             int n = l.n, c = l.centre;
             double *phi = malloc(sizeof *phi * n), *out = malloc(3 * sizeof *out * n);
@@ -240,7 +240,7 @@ static void test_surface_particle(void **s)
     const double dp = 0.01, re = 2.1 * dp;
     struct lat l;
     lat_make(&l, 3, 5, dp, re, 1);
-    struct mps_lattice L;
+    struct pop_lattice L;
     mps_lattice_constants(&mps_kernel_zhang2014, 3, dp, re, &L);
     int n = l.n, c = l.centre;
     double *out = malloc(3 * sizeof *out * n), *nd = malloc(sizeof *nd * n);

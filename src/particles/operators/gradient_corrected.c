@@ -2,7 +2,8 @@
  * gradient_corrected.c — the corrective-matrix pressure gradient (GC) of
  * Khayyer and Gotoh (2011, J. Comput. Phys. 230, 3093, eqs. 25-27), in the
  * (p_j - p_i) form used by corrected ISPH (Lind et al. 2012, J. Comput.
- * Phys. 231, 1499, eq. 13); `pressureGradient corrected;` in mpsSchemes.
+ * Phys. 231, 1499, eq. 13); MPS: `pressureGradient corrected;` in
+ * mpsSchemes, with the fallback normalisation c = d/n0.
  *
  *   <grad p>_i = C_i sum_j (p_j - p_i) r_ij / |r_ij|^2 w_ij / eps_j
  *   C_i        = [ sum_j r_ij (x) r_ij / |r_ij|^2 w_ij / eps_j ]^-1
@@ -20,11 +21,11 @@
  * model or the collision model.
  *
  * Where the moment matrix is (nearly) singular — a particle with neighbours
- * on one line only, or alone — the uncorrected (d/n0) sum (p_j - p_i) form
+ * on one line only, or alone — the uncorrected c sum (p_j - p_i) form
  * is used: its reciprocal condition number (smallest / largest eigenvalue,
  * from the 2x2 or 3x3 symmetric matrix) below GC_RCOND.
  */
-#include "mps/gradient_corrected.h"
+#include "particles/operators/gradient_corrected.h"
 
 #include <math.h>
 
@@ -64,7 +65,7 @@ static void sym3_eigen(const double m[9], double ev[3])
     ev[1] = 3 * q - ev[0] - ev[2];
 }
 
-int mps_moment_solve(int dim, const double m[9], const double v[3],
+int pop_moment_solve(int dim, const double m[9], const double v[3],
                      double g[3])
 {
     if (dim == 2) {
@@ -97,12 +98,11 @@ int mps_moment_solve(int dim, const double m[9], const double v[3],
     return 1;
 }
 
-void mps_gradient_corrected(const struct neighbour_list *nl, const double *w,
-                            int dim, double n0, const double *x,
+void pop_gradient_corrected(const struct neighbour_list *nl, const double *w,
+                            int dim, double c, const double *x,
                             const double *phi, const double *inv_eps,
                             const uint8_t *rows, double *out)
 {
-    const double c = dim / n0;
 #pragma omp parallel for schedule(static)
     for (int i = 0; i < nl->n; i++) {
         if (rows && !rows[i])
@@ -124,7 +124,7 @@ void mps_gradient_corrected(const struct neighbour_list *nl, const double *w,
                     m[3 * q + s] += a * d[q] * d[s];
             }
         }
-        if (!mps_moment_solve(dim, m, v, g))
+        if (!pop_moment_solve(dim, m, v, g))
             for (int q = 0; q < 3; q++)
                 g[q] = c * v[q];
         for (int q = 0; q < 3; q++)
