@@ -60,6 +60,10 @@ const struct model_choice dem_choices[] = {
       TABLE(contact_tangential_table) },
     { "constant/demProperties", "contact/rolling",
       TABLE(contact_rolling_table) },
+    { "constant/demProperties", "contact/twisting",
+      TABLE(contact_twisting_table) },
+    { "constant/demProperties", "contact/tangentialStiffness",
+      TABLE(contact_stiffness_table) },
     { "system/demSolution", "integrator", TABLE(dem_integrator_table) },
     { NULL, NULL, NULL }
 };

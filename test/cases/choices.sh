@@ -16,9 +16,8 @@
 #     there is the one of the case's solver).
 # Checked in the reference dictionaries (applications/**/*.reference,
 # against the registry of their program) and in every tutorial's and the
-# root case's dictionary of a registered file. constant/demProperties of
-# the tutorials is skipped (being edited on another branch) unless
-# CHOICES_DEM=1. Prints PASS name / FAIL name: reason / SKIP name.
+# root case's dictionary of a registered file. Prints PASS name /
+# FAIL name: reason.
 ROOT="$(cd "$(dirname "$0")/../.." && pwd)"
 cd "$ROOT" || exit 1
 TMP=$(mktemp -d); trap 'rm -rf "$TMP"' EXIT
@@ -122,10 +121,6 @@ done
 for f in $(cut -d' ' -f1 "$TMP/all.reg" | sort -u); do
     for d in $f tutorials/*/*/$f; do
         [ -f "$d" ] || continue
-        if [ "$f" = constant/demProperties ] && [ "${CHOICES_DEM:-0}" != 1 ]; then
-            echo "SKIP $d: constant/demProperties is being edited on another branch (CHOICES_DEM=1 checks it)"
-            continue
-        fi
         check "$TMP/all.reg" "$d" "$d" "$f" 0 || status=1
     done
 done
