@@ -71,6 +71,11 @@ struct ark {
     unsigned char *mode_next;  /* as found at the last accepted state   */
     int *rootdir;              /* -1 per slot: slip ends only           */
     int *rootinfo;             /* slots whose slip phase just ended     */
+    double *gcache;            /* switching functions of the last
+                                  projection, for ARKode's root check at
+                                  the same accepted state               */
+    double t_gcache;
+    int gcache_ok;
     size_t rootdir_cap;
     long events;               /* slip ends located                     */
 };
@@ -163,10 +168,15 @@ static int post_step(realtype t, N_Vector y, void *ud)
     memcpy(a->mode_next, a->mode, nslot);
     d->spring_in = yy + off;
     d->slip_mode = a->mode_next;
+    d->slip_g = a->gcache;   /* unchanged by the projection below: it
+                                rescales slipping springs only */
     int rc = dem_forces(d, t, yy, yy + n3, yy + 2 * n3, 0.0, 1, s + n3,
                         s + 2 * n3);
     d->spring_in = NULL;
     d->slip_mode = NULL;
+    d->slip_g = NULL;
+    a->t_gcache = t;
+    a->gcache_ok = a->gcache != NULL;
     if (rc)
         return -1;
     d->stats.fevals--;
@@ -184,6 +194,13 @@ static int slip_roots(realtype t, N_Vector y, realtype *gout, void *ud)
     struct ark *a = ud;
     struct dem *d = a->d;
     size_t n3 = 3 * d->n, off = spring_offset(a);
+    if (a->gcache_ok && t == a->t_gcache) {
+        /* ARKode's check at the accepted state the hook has just
+         * evaluated (arkode.c: arkCompleteStep, then arkRootCheck3) */
+        memcpy(gout, a->gcache, spring_len(d) / 3 * sizeof *gout);
+        a->gcache_ok = 0;
+        return 0;
+    }
     double *yy = N_VGetArrayPointer(y), *s = N_VGetArrayPointer(a->scratch);
     d->spring_in = yy + off;
     d->slip_g = gout;
@@ -291,6 +308,7 @@ static int commit(struct ark *a, double t)
         return sim_error(SIM_ERR_NUMERIC, "arkode: force evaluation "
                          "failed at t = %.9g s", t);
     memcpy(a->mode, a->mode_next, spring_len(a->d) / 3);
+    a->gcache_ok = 0;
     ARKCHECK(ERKStepReset(a->mem, t, a->y));
     return SIM_OK;
 }
@@ -376,6 +394,10 @@ static int init_roots(struct ark *a, struct dem *d)
         if (!r)
             return SIM_ERR_NOMEM;
         a->rootinfo = r;
+        double *g = sim_realloc(a->gcache, cap * sizeof *g);
+        if (!g)
+            return SIM_ERR_NOMEM;
+        a->gcache = g;
         a->rootdir_cap = cap;
     }
     memset(a->mode, 0, nr);
@@ -493,6 +515,7 @@ static int ark_advance(void *ctx, struct dem *d, double t_end)
              * limit): the slots whose function vanished change phase */
             for (size_t k = 0; k < nr; k++)
                 a->mode[k] = a->rootinfo[k] ? !a->mode[k] : a->mode_next[k];
+            a->gcache_ok = 0;
             TRY(arm_roots(a, d, 1));
             ARKCHECK(ERKStepReset(a->mem, t, a->y));
             ARKCHECK(ERKStepSetStopTime(a->mem, t_end));
@@ -505,6 +528,7 @@ static int ark_advance(void *ctx, struct dem *d, double t_end)
             /* slip phases began or ended at this accepted step: ARKode
              * re-evaluates the switching functions with them */
             memcpy(a->mode, a->mode_next, nslot);
+            a->gcache_ok = 0;
             if (flag != ARK_TSTOP_RETURN) {
                 ARKCHECK(ERKStepReset(a->mem, t, a->y));
                 ARKCHECK(ERKStepSetStopTime(a->mem, t_end));
@@ -564,6 +588,7 @@ static void ark_destroy(void *ctx)
     free_vectors(a);
     free(a->rootdir);
     free(a->rootinfo);
+    free(a->gcache);
     free(a->mode);
     free(a->mode_next);
     SUNContext_Free(&a->sun);
