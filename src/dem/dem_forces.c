@@ -12,6 +12,16 @@
  * once) and the buffers are summed per grain afterwards, so the result does
  * not depend on a race. Wall contacts belong to one grain and need no
  * buffer; the force a wall receives is summed per patch.
+ *
+ * The tangential springs come from the stored histories (extended by
+ * tau v^t, Verlet) or, for ARKode, from its state (d->spring_in), whose
+ * rates it then writes (doc/theory.md A.6):
+ *
+ *   d delta^t/dt = v^t - n (delta^t . dn/dt),  dn/dt = (I - n n) dv/|dx|
+ *
+ * for a pair in contact (dv = v_l - v_k, dx = x_l - x_k), v^t for a wall
+ * contact, 0 for a slot out of contact; with the slip phases and their
+ * switching functions of dem.h (slip_mode, slip_g).
  */
 #include <math.h>
 #include <omp.h>

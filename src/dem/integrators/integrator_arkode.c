@@ -12,14 +12,23 @@
  * pair), so the springs are integrated by the same Runge-Kutta method as
  * the motion and are part of the error test (atol: atol_x); a contact that
  * starts inside a step starts from 0 at its onset. The transport term keeps
- * a pair spring in the turning tangent plane (dem_forces.c). The Coulomb
- * slider and the rotation onto the tangent plane act on the force at every
- * stage (the contact law, with tau = 0) and on the state as a projection at
- * accepted steps (post-step hook: one committing force evaluation, counted
- * as hist_evals, after which ARKode re-evaluates the right-hand side).
- * When the neighbour list is rebuilt the slots change: the springs are
- * carried by the list (nlist_carry) and S is re-laid out (ERKStepResize,
- * which keeps the step size).
+ * a pair spring in the turning tangent plane (dem_forces.c).
+ *
+ * The Coulomb slider is a phase per slot (dem.h slip_mode): it starts where
+ * |F^t| reaches mu |F^n| and ends where the spring stops loading
+ * (s^.v^t = 0); inside it the force is -mu |F^n| s^ whatever the state's
+ * length. Both are events located by ERKStep's root finding (one function
+ * per slot, dem.h slip_g); the step is redone from its start to the event
+ * (ARKode's state at a root is an interpolant of a step taken with the old
+ * phase), the spring put at the limit there, and the integration restarted
+ * (ERKStepReset). Without this the slider acts one step late, a first-order
+ * error outside the error test. At accepted steps the springs are projected
+ * as the contact law implies (rotation, limit, 0 out of contact: post-step
+ * hook, one committing force evaluation counted as hist_evals, after which
+ * ARKode re-evaluates the right-hand side), and the phases found there take
+ * effect. When the neighbour list is rebuilt the slots change: the springs
+ * are carried by the list (nlist_carry) and S is re-laid out
+ * (ERKStepResize, which keeps the step size).
  *
  * Step size: ARKode's error control with rtol and a vector atol
  * (positions and springs, velocities, spins), bounded by a stability
@@ -77,7 +86,8 @@ struct ark {
     double t_gcache;
     int gcache_ok;
     size_t rootdir_cap;
-    long events;               /* slip ends located                     */
+    long events;               /* slip starts and ends located          */
+    size_t nroots;             /* armed root functions                  */
 };
 
 /* Offset of the spring block in the state. */
@@ -358,8 +368,12 @@ static int relayout(struct ark *a, struct dem *d, double t)
 static int arm_roots(struct ark *a, struct dem *d, int on)
 {
     size_t nr = spring_len(d) / 3;
-    if (!on || d->law.tangential->history == 0 || !(d->law.c.mu > 0))
+    int use = a->p.slip_events == 1
+              || (a->p.slip_events == 0 && d->n <= DEM_SLIP_EVENTS_MAX);
+    if (!on || !use || d->law.tangential->history == 0
+        || !(d->law.c.mu > 0))
         nr = 0;
+    a->nroots = nr;
     if (nr > (size_t)INT32_MAX)
         return sim_error(SIM_ERR_INPUT, "arkode: %zu contact slots", nr);
     ARKCHECK(ERKStepRootInit(a->mem, (int)nr, nr ? slip_roots : NULL));
@@ -529,7 +543,7 @@ static int ark_advance(void *ctx, struct dem *d, double t_end)
              * re-evaluates the switching functions with them */
             memcpy(a->mode, a->mode_next, nslot);
             a->gcache_ok = 0;
-            if (flag != ARK_TSTOP_RETURN) {
+            if (flag != ARK_TSTOP_RETURN && a->nroots) {
                 ARKCHECK(ERKStepReset(a->mem, t, a->y));
                 ARKCHECK(ERKStepSetStopTime(a->mem, t_end));
             }
