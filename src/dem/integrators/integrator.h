@@ -17,7 +17,7 @@
 
 struct dem;
 
-#define DEM_SLIP_EVENTS_MAX 100
+#define DEM_SLIP_EVENTS_MAX 10
 
 struct dem_integrator_params {
     /* verlet */
