@@ -193,7 +193,13 @@ int dem_setup(struct dem *d)
     TRY(wall_candidates(d));
     memset(d->hist, 0, 3 * d->hist_cap * sizeof *d->hist);
     memset(d->whist, 0, 3 * d->whist_cap * sizeof *d->whist);
+    dem_invalidate_forces(d);
     return SIM_OK;
+}
+
+void dem_invalidate_forces(struct dem *d)
+{
+    d->forces_valid = 0;
 }
 
 /* Rebuild with the histories following their pairs. `map` (old index ->
@@ -306,6 +312,7 @@ long dem_check_domain(struct dem *d)
     }
     d->n = k;
     d->stats.removed += count;
+    dem_invalidate_forces(d);   /* acc, alpha were not compacted */
     int rc = rebuild(d, d->x, map, old_n);
     free(map);
     return rc == SIM_OK ? count : -1;
@@ -376,6 +383,9 @@ void dem_coupling_set(struct dem *d, const double *fext, const double *uf,
     d->cpl.eps = eps;
     d->cpl.drag = drag;
     d->cpl.drag_ctx = drag_ctx;
+    /* a new fluid state (or the same arrays refilled): the drag and
+     * external force of the last evaluation are stale */
+    dem_invalidate_forces(d);
 }
 
 double dem_mean_drag(struct dem *d, double *fd)

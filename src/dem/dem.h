@@ -52,7 +52,8 @@ struct dem_stats {
     long rejected;        /* rejected steps (error test failures)      */
     long stab_limited;    /* steps limited by the stability bound      */
     long fevals;          /* force evaluations (integrator stages)     */
-    long hist_evals;      /* extra evaluations to commit histories     */
+    long hist_evals;      /* extra evaluations to commit histories
+                             (arkode: the Coulomb projection)          */
     long rebuilds;        /* neighbour-list builds                     */
     long removed;         /* grains removed (left the domain)          */
 };
@@ -115,6 +116,27 @@ struct dem {
     size_t omp_min;               /* fewer grains: force loop on 1 thread */
     double kick;                  /* != 0: dem_forces ends with
                                      v += kick a, w += kick alpha (Verlet) */
+    /* Springs as ODE state (arkode): when spring_in is set, dem_forces
+     * takes the tangential springs from it (3 per pair slot of the
+     * neighbour list, then 3 per grain and wall: the layout of hist and
+     * whist) with tau = 0, and writes d(delta^t)/dt into spring_rate,
+     * 0 for a slot not in contact (doc/theory.md A.6). */
+    const double *spring_in;
+    double *spring_rate;
+    /* Slip phases (arkode; same slot layout, dem_forces.c): slip_mode
+     * marks the slots found sliding at the last committing evaluation
+     * (which updates it); while set and the spring is still loaded the
+     * slot slides. slip_g, when set, receives per slot the switching
+     * function s^.v^t of a slip phase (1 otherwise): its zero from above
+     * ends the phase, an event the integrator locates. */
+    unsigned char *slip_mode;
+    double *slip_g;
+    /* acc, alpha, cpl.fd and the histories are those of the current x, v,
+     * w (set by a committing dem_forces); cleared by every change from
+     * outside the integrator (dem_setup, grain removal, a new coupling
+     * state, dem_invalidate_forces), so that Verlet re-evaluates only
+     * then. */
+    int forces_valid;
     struct dem_coupling cpl;
     struct dem_stats stats;
 };
@@ -131,11 +153,13 @@ int dem_resize(struct dem *d, size_t n);
 int dem_setup(struct dem *d);
 
 /* Force evaluation at state (x, v, w) at time t, tau = t - t_accepted for
- * the tangential springs. Writes accelerations acc (3n) and angular
- * accelerations alpha (3n), patch forces and omega2_max. With commit set
- * the state is accepted: the springs it implies replace the stored
- * histories (in place); otherwise (a Runge-Kutta stage) they are left
- * alone. The neighbour list must be valid for x. */
+ * the tangential springs (0 with d->spring_in set: the springs are then
+ * given). Writes accelerations acc (3n) and angular accelerations alpha
+ * (3n), patch forces and omega2_max. With commit set the state is
+ * accepted: the springs it implies (rotated onto the tangent plane,
+ * limited by the slider, 0 out of contact) replace the stored histories
+ * hist, whist; otherwise (a Runge-Kutta stage) they are left alone. The
+ * neighbour list must be valid for x. */
 int dem_forces(struct dem *d, double t, const double *x, const double *v,
                const double *w, double tau, int commit, double *acc,
                double *alpha);
@@ -144,6 +168,10 @@ int dem_forces(struct dem *d, double t, const double *x, const double *v,
  * t (position, velocity, removal). dem_forces does it at its time, and
  * dem_setup at d->t. */
 void dem_walls_at(struct dem *d, double t);
+
+/* The grains, their histories or the coupling inputs were changed from
+ * outside the integrator: forces kept from the last evaluation are stale. */
+void dem_invalidate_forces(struct dem *d);
 
 /* Rebuild the neighbour list if x moved more than skin/2 since the last
  * build; histories follow their pairs. Returns SIM_OK. */

@@ -210,6 +210,13 @@ static int read_arkode(const struct dict *sol, struct dem *d,
     long ms;
     TRY(dict_get_label_or(a.d, key(&a, "maxSteps"), 100000000L, &ms));
     p->max_steps = ms;
+    const char *ev;
+    TRY(dict_get_string_or(a.d, key(&a, "slipEvents"), "auto", &ev));
+    p->slip_events = !strcmp(ev, "auto") ? 0 : !strcmp(ev, "on") ? 1
+                     : !strcmp(ev, "off") ? 2 : -1;
+    if (p->slip_events < 0)
+        return dict_error(a.d, key(&a, "slipEvents"), SIM_ERR_DICT,
+                          "slipEvents '%s': valid: auto on off", ev);
     const char *bad = !(p->rtol > 0) ? "rtol"
                       : !(p->atol_x > 0) ? "atolPosition"
                       : !(p->atol_v > 0) ? "atolVelocity"

@@ -12,6 +12,16 @@
  * once) and the buffers are summed per grain afterwards, so the result does
  * not depend on a race. Wall contacts belong to one grain and need no
  * buffer; the force a wall receives is summed per patch.
+ *
+ * The tangential springs come from the stored histories (extended by
+ * tau v^t, Verlet) or, for ARKode, from its state (d->spring_in), whose
+ * rates it then writes (doc/theory.md A.6):
+ *
+ *   d delta^t/dt = v^t - n (delta^t . dn/dt),  dn/dt = (I - n n) dv/|dx|
+ *
+ * for a pair in contact (dv = v_l - v_k, dx = x_l - x_k), v^t for a wall
+ * contact, 0 for a slot out of contact; with the slip phases and their
+ * switching functions of dem.h (slip_mode, slip_g).
  */
 #include <math.h>
 #include <omp.h>
@@ -46,6 +56,87 @@ static inline void fill_kinematics(struct contact_geom *g, const double *vk,
         g->vt[a] = vr[a] - g->vn * g->n[a];
         g->wrel[a] = wk[a] - (wl ? wl[a] : 0.0);
     }
+}
+
+/* d(delta^t)/dt of a pair spring s carried with the contact: the
+ * tangential relative velocity, plus the turn of the normal that keeps s
+ * in the tangent plane with its length (s.n = 0 stays 0):
+ *   ds/dt = v^t - n (s . dn/dt),  dn/dt = (I - n n)(v_l - v_k)/|x_l - x_k|.
+ * inv = 1/|x_l - x_k|. */
+static inline void spring_rate_pair(const struct contact_geom *g,
+                                    const double *s, double inv,
+                                    const double *vk, const double *vl,
+                                    double *rate)
+{
+    double dv[3], dvn = 0;
+    for (int a = 0; a < 3; a++) {
+        dv[a] = vl[a] - vk[a];
+        dvn += dv[a] * g->n[a];
+    }
+    double sdn = 0;
+    for (int a = 0; a < 3; a++)
+        sdn += s[a] * (dv[a] - dvn * g->n[a]) * inv;
+    for (int a = 0; a < 3; a++)
+        rate[a] = g->vt[a] - g->n[a] * sdn;
+}
+
+/* Slip phases (arkode, dem.h slip_mode): a contact found sliding at the
+ * last accepted state keeps sliding while its spring is still loaded
+ * (s^.v^t > 0), the limit of the slider as the step goes to zero; the law
+ * is then given a spring of 1 m along s^, far beyond the slider's reach
+ * (kt x 1 m >> mu F^n for any overlap << 1 m), so that it returns the
+ * sliding force and the spring at the limit whatever the state's length.
+ * slip_g holds the switching functions whose zeros from above are the
+ * start (|F^t| reaches mu |F^n|) and the end (s^.v^t falls through 0) of
+ * a phase: events the integrator locates, to change the phase and put
+ * the spring at the limit there. */
+static inline const double *slip_spring(const struct dem *d, size_t slot,
+                                        const double *hs, const double *vt,
+                                        double *buf)
+{
+    if (!d->slip_mode || !d->slip_mode[slot])
+        return hs;
+    double s2 = hs[0] * hs[0] + hs[1] * hs[1] + hs[2] * hs[2];
+    double sv = hs[0] * vt[0] + hs[1] * vt[1] + hs[2] * vt[2];
+    if (!(s2 > 0) || !(sv > 0))
+        return hs;
+    double k = 1.0 / sqrt(s2);
+    for (int a = 0; a < 3; a++)
+        buf[a] = k * hs[a];
+    return buf;
+}
+
+static inline void slip_after(struct dem *d, size_t slot, const double *hs,
+                              const struct contact_result *res,
+                              const double *vt, int commit)
+{
+    int mode = d->slip_mode && d->slip_mode[slot];
+    double fmax = d->law.c.mu * fabs(res->fn);
+    double fl = sqrt(res->ft[0] * res->ft[0] + res->ft[1] * res->ft[1]
+                     + res->ft[2] * res->ft[2]);
+    double s2 = hs[0] * hs[0] + hs[1] * hs[1] + hs[2] * hs[2];
+    double sv = hs[0] * vt[0] + hs[1] * vt[1] + hs[2] * vt[2];
+    if (d->slip_g) {
+        if (mode)   /* the end of the phase: the spring stops loading */
+            d->slip_g[slot] = s2 > 0 ? sv / sqrt(s2) : 1.0;
+        else        /* its start: |F^t| reaches mu |F^n| (within 1e-7,
+                       which the commit below counts as sliding) */
+            d->slip_g[slot] = fmax > 0 ? 1.0 - fl / fmax - 1e-7 : 1.0;
+    }
+    if (commit && d->slip_mode)   /* a phase that has stopped loading has
+                                     ended (the spring is put at the limit
+                                     by this commit) */
+        d->slip_mode[slot] = fmax > 0 && fl >= fmax * (1 - 1e-6)
+                             && !(mode && !(sv > 0));
+}
+
+/* A slot out of contact: no slip phase, no event. */
+static inline void slip_open(struct dem *d, size_t slot, int commit)
+{
+    if (d->slip_g)
+        d->slip_g[slot] = 1.0;
+    if (commit && d->slip_mode)
+        d->slip_mode[slot] = 0;
 }
 
 /* The accumulation buffers are kept all zero between evaluations: every
@@ -84,6 +175,9 @@ static void pair_row(struct dem *d, size_t i, const double *x, const double *v,
             double *h = &d->hist[3 * p];
             if (commit && (h[0] != 0 || h[1] != 0 || h[2] != 0))
                 h[0] = h[1] = h[2] = 0;   /* the contact ended */
+            if (d->spring_rate)
+                memset(&d->spring_rate[3 * p], 0, 3 * sizeof(double));
+            slip_open(d, p, commit);
             continue;
         }
         /* divisions dominate the geometry: one reciprocal each */
@@ -99,12 +193,20 @@ static void pair_row(struct dem *d, size_t i, const double *x, const double *v,
                         &w[3 * j], d->r[j]);
         struct contact_result res;
         double hn[3];
+        const double *hs = d->spring_in ? &d->spring_in[3 * p]
+                                        : &d->hist[3 * p];
+        double sb[3];
+        const double *hl = slip_spring(d, p, hs, g.vt, sb);
         if (fused)
-            contact_eval_fused(&d->law, &g, &d->hist[3 * p], tau, hn, &res);
+            contact_eval_fused(&d->law, &g, hl, tau, hn, &res);
         else
-            contact_eval(&d->law, &g, &d->hist[3 * p], tau, hn, &res);
+            contact_eval(&d->law, &g, hl, tau, hn, &res);
         if (commit)
             memcpy(&d->hist[3 * p], hn, sizeof hn);
+        if (d->spring_rate)
+            spring_rate_pair(&g, hs, inv, &v[3 * i], &v[3 * j],
+                             &d->spring_rate[3 * p]);
+        slip_after(d, p, hs, &res, g.vt, commit);
         double tc[3];
         cross3(g.n, res.ft, tc);
         for (int a = 0; a < 3; a++) {
@@ -125,6 +227,7 @@ static void wall_row(struct dem *d, size_t i, const double *x, const double *v,
                      double *t, double *pf, long *nc, double *om2)
 {
     int fused = contact_law_is_fused(&d->law);
+    size_t wk = 3 * d->nl.npairs;   /* wall springs follow the pairs' */
     size_t q0 = d->use_wlist ? d->wstart[i] : 0;
     size_t q1 = d->use_wlist ? d->wstart[i + 1] : (size_t)d->nwalls;
     for (size_t q = q0; q < q1; q++) {
@@ -136,6 +239,9 @@ static void wall_row(struct dem *d, size_t i, const double *x, const double *v,
             double *h = &d->whist[hk];
             if (commit && (h[0] != 0 || h[1] != 0 || h[2] != 0))
                 h[0] = h[1] = h[2] = 0;
+            if (d->spring_rate)
+                memset(&d->spring_rate[wk + hk], 0, 3 * sizeof(double));
+            slip_open(d, (wk + hk) / 3, commit);
             continue;
         }
         g.rstar = d->r[i];
@@ -147,12 +253,21 @@ static void wall_row(struct dem *d, size_t i, const double *x, const double *v,
                         d->walls[wl].vel, NULL, 0);
         struct contact_result res;
         double hn[3];
+        const double *hs = d->spring_in ? &d->spring_in[wk + hk]
+                                        : &d->whist[hk];
+        double sb[3];
+        const double *hl = slip_spring(d, (wk + hk) / 3, hs, g.vt, sb);
         if (fused)
-            contact_eval_fused(&d->law, &g, &d->whist[hk], tau, hn, &res);
+            contact_eval_fused(&d->law, &g, hl, tau, hn, &res);
         else
-            contact_eval(&d->law, &g, &d->whist[hk], tau, hn, &res);
+            contact_eval(&d->law, &g, hl, tau, hn, &res);
         if (commit)
             memcpy(&d->whist[hk], hn, sizeof hn);
+        if (d->spring_rate)   /* a fixed wall: its normal turns only with
+                                 the grain's motion on a curved wall, left
+                                 to the projection at accepted steps */
+            memcpy(&d->spring_rate[wk + hk], g.vt, sizeof g.vt);
+        slip_after(d, (wk + hk) / 3, hs, &res, g.vt, commit);
         double tc[3];
         cross3(g.n, res.ft, tc);
         int pa = d->walls[wl].patch;

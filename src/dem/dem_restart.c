@@ -85,6 +85,7 @@ static int set_pair(struct dem *d, size_t a, size_t b, const double *h)
 
 int dem_read_contacts(const char *path, struct dem *d, int *found)
 {
+    dem_invalidate_forces(d);
     FILE *f = fopen(path, "r");
     *found = f != NULL;
     if (!f)

@@ -281,7 +281,8 @@ static void final_stats(const struct solid *s)
     log_info("    steps taken          %ld", st->steps);
     log_info("    steps rejected       %ld", st->rejected);
     log_info("    stability-limited    %ld", st->stab_limited);
-    log_info("    force evaluations    %ld (+ %ld history commits)",
+    log_info("    force evaluations    %ld (+ %ld spring projections and "
+             "slip-event checks)",
              st->fevals, st->hist_evals);
     log_info("    neighbour builds     %ld", st->rebuilds);
     log_info("    grains removed       %ld", st->removed);

@@ -3,15 +3,21 @@
  * system/demSolution (`integrator arkode;` or `verlet;`).
  *
  * An integrator advances a struct dem from d->t to a given time exactly
- * (every coupling and output time is a stop time), updates the tangential
- * histories at accepted steps, rebuilds the neighbour list when due, adds
- * the applied drag to the coupling accumulator, and counts steps, rejected
- * steps and force evaluations in d->stats.
+ * (every coupling and output time is a stop time), leaves the tangential
+ * histories of the state it ends at in d->hist, d->whist, rebuilds the
+ * neighbour list when due, adds the applied drag to the coupling
+ * accumulator, and counts steps, rejected steps and force evaluations in
+ * d->stats. It may keep forces from one advance to the next (Verlet does):
+ * whoever changes the grains, their histories or the coupling inputs from
+ * outside calls dem_invalidate_forces (dem_setup, dem_check_domain,
+ * dem_coupling_set and dem_read_contacts do).
  */
 #ifndef MPSDEM_DEM_INTEGRATOR_H
 #define MPSDEM_DEM_INTEGRATOR_H
 
 struct dem;
+
+#define DEM_SLIP_EVENTS_MAX 10
 
 struct dem_integrator_params {
     /* verlet */
@@ -25,6 +31,9 @@ struct dem_integrator_params {
     double safety;          /* fraction of the contact stability bound       */
     const char *table;      /* ERK table name, e.g. "DORMAND_PRINCE_7_4_5"   */
     long max_steps;         /* per advance                                   */
+    int slip_events;        /* locate slip starts/ends as events: 0 auto (on
+                               for at most DEM_SLIP_EVENTS_MAX grains: each
+                               event restarts the integration), 1 on, 2 off */
 };
 
 struct dem_integrator_ops {
@@ -35,7 +44,8 @@ struct dem_integrator_ops {
     int (*create)(struct dem *d, const struct dem_integrator_params *p,
                   void **ctx);
     /* Advance to t_end (> d->t). Call after any outside change of the
-     * grains (count, positions) too: the integrator notices. */
+     * grains (count, positions) too: the integrator notices (a change of
+     * positions or velocities alone only after dem_invalidate_forces). */
     int (*advance)(void *ctx, struct dem *d, double t_end);
     /* At a write time: make the integrator's future independent of its
      * past (an adaptive one restarts from d->h_next, which it sets), so

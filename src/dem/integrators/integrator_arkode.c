@@ -2,11 +2,37 @@
  * integrator_arkode.c — error-controlled explicit Runge-Kutta sub-stepping
  * with SUNDIALS ARKode ERKStep 6.4.1 (doc/libraries.md §1), for
  *
- *   y = (x, v, w),  dx/dt = v,  dv/dt = a(x, v, w),  dw/dt = alpha(x, v, w)
+ *   y = (x, v, w, [J], S),  dx/dt = v,  dv/dt = a(x, v, w, S),
+ *   dw/dt = alpha(x, v, w, S),
+ *   dS_c/dt = v^t_c - n_c (S_c . dn_c/dt)   while contact c is active,
+ *           = 0                             otherwise
  *
- * (doc/theory.md A.6, eqs. 17-18). Step size: ARKode's error control with
- * rtol and a vector atol (positions, velocities, spins), bounded by a
- * stability function:
+ * (doc/theory.md A.6, eqs. 17-20). S holds the tangential spring of every
+ * contact slot (the pairs of the neighbour list, then every grain-wall
+ * pair), so the springs are integrated by the same Runge-Kutta method as
+ * the motion and are part of the error test (atol: atol_x); a contact that
+ * starts inside a step starts from 0 at its onset. The transport term keeps
+ * a pair spring in the turning tangent plane (dem_forces.c).
+ *
+ * The Coulomb slider is a phase per slot (dem.h slip_mode): it starts where
+ * |F^t| reaches mu |F^n| and ends where the spring stops loading
+ * (s^.v^t = 0); inside it the force is -mu |F^n| s^ whatever the state's
+ * length. Both are events located by ERKStep's root finding (one function
+ * per slot, dem.h slip_g); the step is redone from its start to the event
+ * (ARKode's state at a root is an interpolant of a step taken with the old
+ * phase), the spring put at the limit there, and the integration restarted
+ * (ERKStepReset). Without this the slider acts one step late, a first-order
+ * error outside the error test. At accepted steps the springs are projected
+ * as the contact law implies (rotation, limit, 0 out of contact: post-step
+ * hook, one committing force evaluation counted as hist_evals, after which
+ * ARKode re-evaluates the right-hand side), and the phases found there take
+ * effect. When the neighbour list is rebuilt the slots change: the springs
+ * are carried by the list (nlist_carry) and S is re-laid out
+ * (ERKStepResize, which keeps the step size).
+ *
+ * Step size: ARKode's error control with rtol and a vector atol
+ * (positions and springs, velocities, spins), bounded by a stability
+ * function:
  *
  *   h_stab = safety * min( dt_R (eq. 38, coefficient 0.1631),
  *                          2/omega_max, h_move ) while a contact is active,
@@ -17,12 +43,9 @@
  *
  * With no contact only h_move and accuracy limit the step: a ballistic phase
  * takes large steps (gravity alone is integrated exactly by any RK method).
- * Every call ends exactly at t_end (SetStopTime). Tangential springs are
- * extrapolated inside a step, delta^t = delta^t_n + (t - t_n) v^t, and
- * committed at accepted steps by one extra force evaluation at the accepted
- * state (post-step hook), counted separately (hist_evals).
+ * Every call ends exactly at t_end (SetStopTime).
  *
- * With a drag law set, the state carries a fourth block, the drag impulse J_k = int F^d_k dt
+ * With a drag law set, the state carries the drag impulse J_k = int F^d_k dt
  * (excluded from the error test by a huge atol): integrated by the same
  * Runge-Kutta weights as the momentum, its increment over an advance is
  * exactly the drag the grains received, so the averaged drag returned to
@@ -31,6 +54,7 @@
 #include <arkode/arkode_erkstep.h>
 #include <math.h>
 #include <nvector/nvector_serial.h>
+#include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -42,28 +66,63 @@
 struct ark {
     SUNContext sun;
     void *mem;
-    N_Vector y, atol, scratch;
-    size_t n;                  /* grains the vectors were made for */
-    double t_acc;              /* last accepted time               */
+    N_Vector y, atol, scratch, yprev;
+    size_t n;                  /* grains the vectors were made for      */
+    size_t npairs;             /* pair slots of the spring block        */
+    long nbuilds;              /* neighbour list the slots belong to    */
     struct dem *d;
     struct dem_integrator_params p;
-    char msg[512];             /* last SUNDIALS error message      */
-    int reset;                 /* re-create at the next advance    */
-    int impulse;               /* state carries the drag impulse   */
+    char msg[512];             /* last SUNDIALS error message           */
+    int reset;                 /* re-create at the next advance         */
+    int impulse;               /* state carries the drag impulse        */
+    int need_eval;             /* no evaluation since the set-up        */
+    unsigned char *mode;       /* slip phase per slot (dem.h)           */
+    unsigned char *mode_next;  /* as found at the last accepted state   */
+    int *rootdir;              /* -1 per slot: slip ends only           */
+    int *rootinfo;             /* slots whose slip phase just ended     */
+    double *gcache;            /* switching functions of the last
+                                  projection, for ARKode's root check at
+                                  the same accepted state               */
+    double t_gcache;
+    int gcache_ok;
+    size_t rootdir_cap;
+    long events;               /* slip starts and ends located          */
+    size_t nroots;             /* armed root functions                  */
 };
+
+/* Offset of the spring block in the state. */
+static size_t spring_offset(const struct ark *a)
+{
+    return (a->impulse ? 12 : 9) * a->n;
+}
+
+static size_t spring_len(const struct dem *d)
+{
+    return 3 * (d->nl.npairs + d->n * (size_t)d->nwalls);
+}
+
+static int eval(struct ark *a, double t, N_Vector y, N_Vector ydot)
+{
+    struct dem *d = a->d;
+    size_t n3 = 3 * d->n, off = spring_offset(a);
+    double *yy = N_VGetArrayPointer(y), *yd = N_VGetArrayPointer(ydot);
+    memcpy(yd, yy + n3, n3 * sizeof *yd);
+    d->spring_in = yy + off;
+    d->spring_rate = yd + off;
+    d->slip_mode = a->mode;
+    int rc = dem_forces(d, t, yy, yy + n3, yy + 2 * n3, 0.0, 0, yd + n3,
+                        yd + 2 * n3);
+    d->spring_in = NULL;
+    d->spring_rate = NULL;
+    d->slip_mode = NULL;
+    if (a->impulse)
+        memcpy(yd + 3 * n3, d->cpl.fd, n3 * sizeof *yd);
+    return rc;
+}
 
 static int rhs(realtype t, N_Vector y, N_Vector ydot, void *ud)
 {
-    struct ark *a = ud;
-    struct dem *d = a->d;
-    size_t n3 = 3 * d->n;
-    double *yy = N_VGetArrayPointer(y), *yd = N_VGetArrayPointer(ydot);
-    memcpy(yd, yy + n3, n3 * sizeof *yd);
-    int rc = dem_forces(d, t, yy, yy + n3, yy + 2 * n3, t - a->t_acc, 0,
-                        yd + n3, yd + 2 * n3);
-    if (a->impulse)
-        memcpy(yd + 3 * n3, d->cpl.fd, n3 * sizeof *yd);
-    return rc == SIM_OK ? 0 : -1;
+    return eval(ud, t, y, ydot) == SIM_OK ? 0 : -1;
 }
 
 /* Largest step for which no grain moves past a wall or out of the skin.
@@ -106,19 +165,67 @@ static int stability(N_Vector y, realtype t, realtype *hstab, void *ud)
     return 0;
 }
 
+/* Accepted step: the springs the contact law implies at the accepted
+ * state (rotated onto the tangent plane, limited by the slider, 0 out of
+ * contact) replace the spring block; ARKode re-evaluates f after this. */
 static int post_step(realtype t, N_Vector y, void *ud)
 {
     struct ark *a = ud;
     struct dem *d = a->d;
-    size_t n3 = 3 * d->n;
+    size_t n3 = 3 * d->n, off = spring_offset(a);
     double *yy = N_VGetArrayPointer(y), *s = N_VGetArrayPointer(a->scratch);
-    double h = t - a->t_acc;
-    if (dem_forces(d, t, yy, yy + n3, yy + 2 * n3, h, 1, s + n3, s + 2 * n3))
+    /* the slip phases found here take effect between steps (ark_advance):
+     * ARKode has yet to evaluate the switching functions at t with the
+     * phases the step was taken with */
+    size_t nslot = spring_len(d) / 3;
+    memcpy(a->mode_next, a->mode, nslot);
+    d->spring_in = yy + off;
+    d->slip_mode = a->mode_next;
+    d->slip_g = a->gcache;   /* unchanged by the projection below: it
+                                rescales slipping springs only */
+    int rc = dem_forces(d, t, yy, yy + n3, yy + 2 * n3, 0.0, 1, s + n3,
+                        s + 2 * n3);
+    d->spring_in = NULL;
+    d->slip_mode = NULL;
+    d->slip_g = NULL;
+    a->t_gcache = t;
+    a->gcache_ok = a->gcache != NULL;
+    if (rc)
         return -1;
     d->stats.fevals--;
     d->stats.hist_evals++;
-    a->t_acc = t;
-    return dem_update_neighbours(d, yy) == SIM_OK ? 0 : -1;
+    memcpy(yy + off, d->hist, 3 * d->nl.npairs * sizeof *yy);
+    memcpy(yy + off + 3 * d->nl.npairs, d->whist,
+           3 * d->n * (size_t)d->nwalls * sizeof *yy);
+    return 0;
+}
+
+/* ARKode root function: the slip switching function of every slot
+ * (dem.h, slip_g), whose zeros from above are the ends of slip phases. */
+static int slip_roots(realtype t, N_Vector y, realtype *gout, void *ud)
+{
+    struct ark *a = ud;
+    struct dem *d = a->d;
+    size_t n3 = 3 * d->n, off = spring_offset(a);
+    if (a->gcache_ok && t == a->t_gcache) {
+        /* ARKode's check at the accepted state the hook has just
+         * evaluated (arkode.c: arkCompleteStep, then arkRootCheck3) */
+        memcpy(gout, a->gcache, spring_len(d) / 3 * sizeof *gout);
+        a->gcache_ok = 0;
+        return 0;
+    }
+    double *yy = N_VGetArrayPointer(y), *s = N_VGetArrayPointer(a->scratch);
+    d->spring_in = yy + off;
+    d->slip_g = gout;
+    d->slip_mode = a->mode;
+    int rc = dem_forces(d, t, yy, yy + n3, yy + 2 * n3, 0.0, 0, s + n3,
+                        s + 2 * n3);
+    d->spring_in = NULL;
+    d->slip_g = NULL;
+    d->slip_mode = NULL;
+    d->stats.fevals--;
+    d->stats.hist_evals++;
+    return rc == SIM_OK ? 0 : -1;
 }
 
 static void err_handler(int code, const char *module, const char *func,
@@ -138,44 +245,92 @@ static void err_handler(int code, const char *module, const char *func,
 
 static void free_vectors(struct ark *a)
 {
-    if (a->mem)
-        ERKStepFree(&a->mem);
     if (a->y) N_VDestroy(a->y);
     if (a->atol) N_VDestroy(a->atol);
     if (a->scratch) N_VDestroy(a->scratch);
-    a->y = a->atol = a->scratch = NULL;
+    if (a->yprev) N_VDestroy(a->yprev);
+    a->y = a->atol = a->scratch = a->yprev = NULL;
+}
+
+/* New state vectors for the current grains and neighbour list: x, v, w and
+ * J from old (NULL: from d, J = 0), the springs from d->hist, d->whist. */
+static int new_vectors(struct ark *a, struct dem *d, const double *old)
+{
+    size_t n3 = 3 * d->n, ns = spring_len(d);
+    a->impulse = d->cpl.drag != NULL;
+    a->n = d->n;
+    size_t off = spring_offset(a), len = off + ns;
+    len = len ? len : 1;
+    N_Vector y = N_VNew_Serial((sunindextype)len, a->sun);
+    N_Vector at = N_VNew_Serial((sunindextype)len, a->sun);
+    N_Vector sc = N_VNew_Serial((sunindextype)len, a->sun);
+    N_Vector yp = N_VNew_Serial((sunindextype)len, a->sun);
+    if (!y || !at || !sc || !yp) {
+        if (y) N_VDestroy(y);
+        if (at) N_VDestroy(at);
+        if (sc) N_VDestroy(sc);
+        if (yp) N_VDestroy(yp);
+        return sim_error(SIM_ERR_NOMEM, "ARKode vectors of length %zu", len);
+    }
+    free_vectors(a);
+    a->y = y, a->atol = at, a->scratch = sc, a->yprev = yp;
+    /* fused stage combinations: the vector arithmetic of a 7-stage pair is
+     * as costly as the contact forces of a dense pack otherwise */
+    N_VEnableFusedOps_Serial(a->y, SUNTRUE);
+    double *yy = N_VGetArrayPointer(a->y), *tol = N_VGetArrayPointer(a->atol);
+    if (old) {
+        memcpy(yy, old, off * sizeof *yy);
+    } else {
+        memcpy(yy, d->x, n3 * sizeof *yy);
+        memcpy(yy + n3, d->v, n3 * sizeof *yy);
+        memcpy(yy + 2 * n3, d->w, n3 * sizeof *yy);
+        if (a->impulse)
+            memset(yy + 3 * n3, 0, n3 * sizeof *yy);
+    }
+    memcpy(yy + off, d->hist, 3 * d->nl.npairs * sizeof *yy);
+    memcpy(yy + off + 3 * d->nl.npairs, d->whist,
+           3 * d->n * (size_t)d->nwalls * sizeof *yy);
+    for (size_t k = 0; k < n3; k++) {
+        tol[k] = a->p.atol_x;
+        tol[n3 + k] = a->p.atol_v;
+        tol[2 * n3 + k] = a->p.atol_w;
+        if (a->impulse)   /* the impulse takes no part in the error test */
+            tol[3 * n3 + k] = 1e300;
+    }
+    /* springs are lengths: the positions' atol (10^-3 of it made a
+     * settling pack of 64 grains take 10 times the steps) */
+    for (size_t k = off; k < off + ns; k++)
+        tol[k] = a->p.atol_x;
+    if (off + ns == 0)
+        yy[0] = 0, tol[0] = 1;
+    a->npairs = d->nl.npairs;
+    a->nbuilds = d->nl.nbuilds;
+    return SIM_OK;
+}
+
+static int init_roots(struct ark *a, struct dem *d);
+
+/* After a set-up or relayout (before ARKode's first step from the new
+ * state): the slip phases and the contact state the stability function
+ * needs, springs projected as at an accepted step; ARKode is told of the
+ * projection by a reset. */
+static int commit(struct ark *a, double t)
+{
+    if (post_step(t, a->y, a))
+        return sim_error(SIM_ERR_NUMERIC, "arkode: force evaluation "
+                         "failed at t = %.9g s", t);
+    memcpy(a->mode, a->mode_next, spring_len(a->d) / 3);
+    a->gcache_ok = 0;
+    ARKCHECK(ERKStepReset(a->mem, t, a->y));
+    return SIM_OK;
 }
 
 /* (Re)create the ERKStep memory for the current grains and state. */
 static int setup(struct ark *a, struct dem *d)
 {
-    free_vectors(a);
-    /* the drag-impulse block only when a drag law is set: the stage
-     * arithmetic of ERK grows with the state, and dominates in dense packs */
-    a->impulse = d->cpl.drag != NULL;
-    size_t n3 = 3 * d->n, len = (a->impulse ? 12 : 9) * (d->n ? d->n : 1);
-    a->y = N_VNew_Serial((sunindextype)len, a->sun);
-    a->atol = N_VNew_Serial((sunindextype)len, a->sun);
-    a->scratch = N_VNew_Serial((sunindextype)len, a->sun);
-    if (!a->y || !a->atol || !a->scratch)
-        return sim_error(SIM_ERR_NOMEM, "ARKode vectors of length %zu", len);
-    /* fused stage combinations: the vector arithmetic of a 7-stage pair is
-     * as costly as the contact forces of a dense pack otherwise */
-    N_VEnableFusedOps_Serial(a->y, SUNTRUE);
-    double *yy = N_VGetArrayPointer(a->y), *at = N_VGetArrayPointer(a->atol);
-    memcpy(yy, d->x, n3 * sizeof *yy);
-    memcpy(yy + n3, d->v, n3 * sizeof *yy);
-    memcpy(yy + 2 * n3, d->w, n3 * sizeof *yy);
-    for (size_t k = 0; k < n3; k++) {
-        at[k] = a->p.atol_x;
-        at[n3 + k] = a->p.atol_v;
-        at[2 * n3 + k] = a->p.atol_w;
-        if (a->impulse) {
-            yy[3 * n3 + k] = 0;
-            at[3 * n3 + k] = 1e300;   /* the impulse takes no part in
-                                         the error test */
-        }
-    }
+    if (a->mem)
+        ERKStepFree(&a->mem);
+    TRY(new_vectors(a, d, NULL));
     a->mem = ERKStepCreate(rhs, d->t, a->y, a->sun);
     if (!a->mem)
         return sim_error(SIM_ERR_EXTERNAL, "ERKStepCreate failed");
@@ -190,10 +345,80 @@ static int setup(struct ark *a, struct dem *d)
     ARKCHECK(ERKStepSetMaxNumSteps(a->mem, a->p.max_steps));
     if (d->h_next > 0)
         ARKCHECK(ERKStepSetInitStep(a->mem, d->h_next));
+    TRY(init_roots(a, d));
     a->reset = 0;
-    a->n = d->n;
-    a->t_acc = d->t;
+    a->need_eval = 1;
     return SIM_OK;
+}
+
+/* The neighbour list was rebuilt: the spring slots changed. Same grains,
+ * same time; ERKStepResize keeps the step size and its history. */
+static int relayout(struct ark *a, struct dem *d, double t)
+{
+    N_Vector old = a->y;
+    a->y = NULL;   /* kept for the copy */
+    int rc = new_vectors(a, d, N_VGetArrayPointer(old));
+    N_VDestroy(old);
+    TRY(rc);
+    ARKCHECK(ERKStepResize(a->mem, a->y, 1.0, t, NULL, NULL));
+    ARKCHECK(ERKStepSVtolerances(a->mem, a->p.rtol, a->atol));
+    return init_roots(a, d);
+}
+
+/* One root per spring slot (none without friction springs). */
+/* Arm (on) or disarm the root functions. */
+static int arm_roots(struct ark *a, struct dem *d, int on)
+{
+    size_t nr = spring_len(d) / 3;
+    int use = a->p.slip_events == 1
+              || (a->p.slip_events == 0 && d->n <= DEM_SLIP_EVENTS_MAX);
+    if (!on || !use || d->law.tangential->history == 0
+        || !(d->law.c.mu > 0))
+        nr = 0;
+    a->nroots = nr;
+    if (nr > (size_t)INT32_MAX)
+        return sim_error(SIM_ERR_INPUT, "arkode: %zu contact slots", nr);
+    ARKCHECK(ERKStepRootInit(a->mem, (int)nr, nr ? slip_roots : NULL));
+    if (nr == 0)
+        return SIM_OK;
+    for (size_t k = 0; k < nr; k++)
+        a->rootdir[k] = -1;
+    ARKCHECK(ERKStepSetRootDirection(a->mem, a->rootdir));
+    ARKCHECK(ERKStepSetNoInactiveRootWarn(a->mem));
+    return SIM_OK;
+}
+
+static int init_roots(struct ark *a, struct dem *d)
+{
+    size_t nr = spring_len(d) / 3, cap = nr ? nr : 1;
+    /* the slot numbering changed: slip phases are found again by the
+     * committing evaluation that follows every set-up */
+    if (cap > a->rootdir_cap) {
+        unsigned char *m = sim_realloc(a->mode, cap);
+        if (!m)
+            return SIM_ERR_NOMEM;
+        a->mode = m;
+        m = sim_realloc(a->mode_next, cap);
+        if (!m)
+            return SIM_ERR_NOMEM;
+        a->mode_next = m;
+        int *r = sim_realloc(a->rootdir, cap * sizeof *r);
+        if (!r)
+            return SIM_ERR_NOMEM;
+        a->rootdir = r;
+        r = sim_realloc(a->rootinfo, cap * sizeof *r);
+        if (!r)
+            return SIM_ERR_NOMEM;
+        a->rootinfo = r;
+        double *g = sim_realloc(a->gcache, cap * sizeof *g);
+        if (!g)
+            return SIM_ERR_NOMEM;
+        a->gcache = g;
+        a->rootdir_cap = cap;
+    }
+    memset(a->mode, 0, nr);
+    a->need_eval = 1;
+    return arm_roots(a, d, 1);
 }
 
 static int ark_create(struct dem *d, const struct dem_integrator_params *p,
@@ -244,35 +469,110 @@ static int ark_advance(void *ctx, struct dem *d, double t_end)
     a->d = d;
     if (!(t_end > d->t))
         return SIM_OK;
-    if (a->reset || state_changed(a, d))
+    int fresh = a->reset || state_changed(a, d);
+    TRY(dem_update_neighbours(d, d->x));
+    if (fresh)
         TRY(setup(a, d));
-    TRY(dem_update_neighbours(d, N_VGetArrayPointer(a->y)));
-    /* One evaluation at the start sets the contact state the stability
-     * function needs (and the forces, if the coupling changed them). */
-    double *yy = N_VGetArrayPointer(a->y), *s = N_VGetArrayPointer(a->scratch);
+    else if (d->nl.nbuilds != a->nbuilds)
+        TRY(relayout(a, d, d->t));
+    /* After a set-up, one evaluation gives the contact state the stability
+     * function needs; otherwise it is that of ARKode's last evaluation,
+     * which was at this very state. */
+    if (a->need_eval) {
+        TRY(commit(a, d->t));
+        a->need_eval = 0;
+    }
     size_t n3 = 3 * d->n;
-    TRY(dem_forces(d, d->t, yy, yy + n3, yy + 2 * n3, d->t - a->t_acc, 0,
-                   s + n3, s + 2 * n3));
+    double *yy = N_VGetArrayPointer(a->y);
     for (size_t k = 0; k < n3; k++)
         d->cpl.fd_sum[k] -= a->impulse ? yy[3 * n3 + k] : 0.0;
     long ex0, acc0, att, fe, rej0;
     ERKStepGetTimestepperStats(a->mem, &ex0, &acc0, &att, &fe, &rej0);
+    long steps = 0, stab = 0, rej = 0;
     ARKCHECK(ERKStepSetStopTime(a->mem, t_end));
-    double t = d->t;
+    double t = d->t, t_prev = t;
     while (t < t_end) {
-        int flag = ERKStepEvolve(a->mem, t_end, a->y, &t, ARK_NORMAL);
+        /* one step at a time: a rebuild of the neighbour list (which
+         * changes the spring slots) is done between steps */
+        t_prev = t;
+        N_VScale(1.0, a->y, a->yprev);
+        int flag = ERKStepEvolve(a->mem, t_end, a->y, &t, ARK_ONE_STEP);
         if (flag < 0)
             return sim_error(SIM_ERR_EXTERNAL,
                              "arkode: ERKStepEvolve failed at t = %.9g s: %s "
                              "%s", t, ERKStepGetReturnFlagName(flag), a->msg);
+        if (flag == ARK_ROOT_RETURN) {
+            /* A slip phase starts or ends at t. ARKode's step went past
+             * it with the old phase, and its interpolant at t carries
+             * that: redo the step from its start to t exactly, then
+             * switch the phase (the spring at the limit) and restart. */
+            double troot = t;
+            size_t nr = spring_len(d) / 3;
+            ARKCHECK(ERKStepGetRootInfo(a->mem, a->rootinfo));
+            ARKCHECK(ERKStepReset(a->mem, t_prev, a->yprev));
+            TRY(arm_roots(a, d, 0));
+            ARKCHECK(ERKStepSetStopTime(a->mem, troot));
+            t = t_prev;
+            while (t < troot) {
+                flag = ERKStepEvolve(a->mem, troot, a->y, &t, ARK_NORMAL);
+                if (flag < 0)
+                    return sim_error(SIM_ERR_EXTERNAL, "arkode: "
+                                     "ERKStepEvolve failed at t = %.9g s: "
+                                     "%s %s", t,
+                                     ERKStepGetReturnFlagName(flag), a->msg);
+                if (flag == ARK_TSTOP_RETURN)
+                    break;
+            }
+            t = troot;
+            if (post_step(t, a->y, a))
+                return sim_error(SIM_ERR_NUMERIC, "arkode: projection of "
+                                 "the springs failed at t = %.9g s", t);
+            /* the commit cannot see the switch itself (it happens at the
+             * limit): the slots whose function vanished change phase */
+            for (size_t k = 0; k < nr; k++)
+                a->mode[k] = a->rootinfo[k] ? !a->mode[k] : a->mode_next[k];
+            a->gcache_ok = 0;
+            TRY(arm_roots(a, d, 1));
+            ARKCHECK(ERKStepReset(a->mem, t, a->y));
+            ARKCHECK(ERKStepSetStopTime(a->mem, t_end));
+            a->events++;
+            continue;
+        }
+        yy = N_VGetArrayPointer(a->y);
+        size_t nslot = spring_len(d) / 3;
+        if (nslot && memcmp(a->mode, a->mode_next, nslot)) {
+            /* slip phases began or ended at this accepted step: ARKode
+             * re-evaluates the switching functions with them */
+            memcpy(a->mode, a->mode_next, nslot);
+            a->gcache_ok = 0;
+            if (flag != ARK_TSTOP_RETURN && a->nroots) {
+                ARKCHECK(ERKStepReset(a->mem, t, a->y));
+                ARKCHECK(ERKStepSetStopTime(a->mem, t_end));
+            }
+        }
+        if (flag != ARK_TSTOP_RETURN && t < t_end
+            && nlist_stale(&d->nl, d->n, yy)) {
+            long ex1, acc1, rej1;
+            ERKStepGetTimestepperStats(a->mem, &ex1, &acc1, &att, &fe, &rej1);
+            steps += (ex1 + acc1) - (ex0 + acc0);
+            stab += ex1 - ex0;
+            rej += rej1 - rej0;
+            TRY(dem_update_neighbours(d, yy));
+            TRY(relayout(a, d, t));
+            TRY(commit(a, t));
+            a->need_eval = 0;
+            ARKCHECK(ERKStepSetStopTime(a->mem, t_end));
+            ERKStepGetTimestepperStats(a->mem, &ex0, &acc0, &att, &fe, &rej0);
+        }
         if (flag == ARK_TSTOP_RETURN)
             break;
     }
     long ex1, acc1, rej1;
     ERKStepGetTimestepperStats(a->mem, &ex1, &acc1, &att, &fe, &rej1);
-    d->stats.steps += (ex1 + acc1) - (ex0 + acc0);
-    d->stats.stab_limited += ex1 - ex0;
-    d->stats.rejected += rej1 - rej0;
+    d->stats.steps += steps + (ex1 + acc1) - (ex0 + acc0);
+    d->stats.stab_limited += stab + ex1 - ex0;
+    d->stats.rejected += rej + rej1 - rej0;
+    yy = N_VGetArrayPointer(a->y);
     for (size_t k = 0; k < n3; k++)
         d->cpl.fd_sum[k] += a->impulse ? yy[3 * n3 + k] : 0.0;
     if (d->cpl.drag)
@@ -299,7 +599,14 @@ static void ark_destroy(void *ctx)
     struct ark *a = ctx;
     if (!a)
         return;
+    if (a->mem)
+        ERKStepFree(&a->mem);
     free_vectors(a);
+    free(a->rootdir);
+    free(a->rootinfo);
+    free(a->gcache);
+    free(a->mode);
+    free(a->mode_next);
     SUNContext_Free(&a->sun);
     free(a);
 }
