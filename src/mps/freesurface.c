@@ -23,12 +23,10 @@
  * phi_i/eps_i, about 1 in a bed: the porous branch is then taken only
  * where a particle holds more water than its pores (phi > eps, a bed
  * compacting around it), and the rest of a bed takes (14) with beta and
- * (16). Taking betaPorous wherever eps < 1 instead (eps = phi/inv_eps) was
- * tried on the sedimentation case at dp = 2.7 mm (2026-11-21): while the
- * bed falls onto the floor (0.02-0.1 s) the flags that beta = 0.97 puts
- * in the torn-up bed relieve the pressure; without them the water column
- * rang for longer (floor pressure 1066 +- 1132 Pa over 0.08-0.1 s against
- * 1093 +- 56 Pa), so the test stays as it is.
+ * (16); taking betaPorous wherever eps < 1 instead lets the water column
+ * ring while the bed lands (the experiment is in
+ * tutorials/mpsDem/multipleParticleSedimentation/README.md, "Free-surface
+ * test in the bed").
  * Wall particles are never free surface; a wall particle with no fluid
  * neighbour within the number-density radius is "dry" and gets p = 0 too,
  * so that the PPE does not carry the whole dry tank wall (whose rows would
