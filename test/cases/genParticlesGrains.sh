@@ -162,6 +162,14 @@ printf 'x,y,z,diameter\n10,10,10,4\n50,50,50,7\n' > "$TMP/fmm/constant/bed.csv"
 run fmm
 expect file_csv_mm "$(values fmm)" "0.01 0.01 0.01 0.002;0.05 0.05 0.05 0.0035;"
 
+# a settled bed rests on the floor with its contact overlap: 2.5 % of the
+# radius is accepted (maxOverlap 0.05), 10 % is not (bad csv_wall_overlap)
+newcase fwall 3 'bed { type grains; shape file; file "constant/bed.csv"; format csv; }'
+printf 'x,y,z,radius\n0.01,0.01,0.00195,0.002\n' > "$TMP/fwall/constant/bed.csv"
+if run fwall; then
+    expect file_csv_wall_overlap "$(values fwall)" "0.01 0.01 0.00195 0.002;"
+else fail file_csv_wall_overlap "$(grep -A1 FATAL "$TMP/fwall.log" | tail -1)"; fi
+
 # LIGGGHTS data file (write_data, atom style sphere: id type diameter
 # density x y z, image flags), written by hand
 newcase fdata 3 'bed { type grains; shape file; file "constant/bed.data"; format liggghtsData; }'
@@ -253,6 +261,8 @@ bad csv_no_header "bed.csv:1: no column 'x' in the header '0.01,0.01,0.01,0.002'
     constant/bed.csv '0.01,0.01,0.01,0.002\n'
 bad csv_outside "bed.csv:3: grain at (0.01 0.01 0.001), radius 0.002, is not inside the tank 'tank'" 3 "$CSV" \
     constant/bed.csv 'x,y,z,radius\n0.01,0.01,0.01,0.002\n0.01,0.01,0.001,0.002\n'
+bad csv_wall_overlap "bed.csv:2: grain at (0.01 0.01 0.0018), radius 0.002, is not inside the tank 'tank'.*maxOverlap 0.05" 3 "$CSV" \
+    constant/bed.csv 'x,y,z,radius\n0.01,0.01,0.0018,0.002\n'
 bad csv_overlap "bed.csv:2: the grain of this line and that of line 4 overlap by 0.25 of the smaller radius, more than maxOverlap 0.05" 3 "$CSV" \
     constant/bed.csv 'x,y,z,radius\n0.01,0.01,0.01,0.002\n0.05,0.05,0.05,0.002\n0.0135,0.01,0.01,0.002\n'
 bad csv_2d_z "bed.csv:2: z = 0.01 in a 2-D case" 2 "$CSV" \

@@ -156,11 +156,14 @@ int gen_file_read(const struct gen_case *c, struct region *r)
     return SIM_OK;
 }
 
-/* Whether grain (x, rad) lies inside tank t, its open faces excepted. */
+/* Whether grain (x, rad) lies inside tank t, its open faces excepted,
+ * overlapping a wall by at most `overlap` of its radius: a bed settled in
+ * another run rests on the walls with the small overlaps its contacts
+ * carry (demSolid's initialOverlap measures them the same way). */
 static int in_tank(const struct region *t, int dim, const double x[3],
-                   double rad)
+                   double rad, double overlap)
 {
-    double tol = 1e-9 * rad;
+    double tol = fmax(1e-9, overlap) * rad;
     if (t->g.shape != GEOM_BOX)
         return geom_distance(&t->g, x) <= -rad + tol;
     for (int d = 0; d < dim; d++) {
@@ -188,7 +191,7 @@ static int check_domain(const struct gen_case *c, const struct region *r)
         int ok = 0;
         for (int i = 0; i < c->nregions && !ok; i++)
             ok = c->r[i].type == REGION_TANK_WALL &&
-                 in_tank(&c->r[i], c->dim, x, r->fr[k]);
+                 in_tank(&c->r[i], c->dim, x, r->fr[k], r->max_overlap);
         if (ok)
             continue;
         if (ntanks > 1)
@@ -199,11 +202,13 @@ static int check_domain(const struct gen_case *c, const struct region *r)
                               r->fr[k]);
         return dict_error(r->d, "file", SIM_ERR_DICT, "region '%s': %s:%ld: "
                           "grain at (%g %g %g), radius %g, is not inside the "
-                          "tank '%s' (%g %g %g)..(%g %g %g)", r->name,
-                          r->file, r->fline[k], x[0], x[1], x[2], r->fr[k],
+                          "tank '%s' (%g %g %g)..(%g %g %g) (a wall overlap "
+                          "up to maxOverlap %g of the radius is accepted)",
+                          r->name, r->file, r->fline[k], x[0], x[1], x[2],
+                          r->fr[k],
                           tank->name, tank->g.lo[0], tank->g.lo[1],
                           tank->g.lo[2], tank->g.hi[0], tank->g.hi[1],
-                          tank->g.hi[2]);
+                          tank->g.hi[2], r->max_overlap);
     }
     return SIM_OK;
 }
