@@ -102,9 +102,20 @@ TEST_SRCS := $(wildcard test/unit/*/*.c test/models/*/*.c)
 TESTS     := $(patsubst test/%.c,$(BUILD)/test/%,$(TEST_SRCS))
 tests: $(TESTS)
 testlib = $(word 3,$(subst /, ,$(1)))
+# A test folder named after a library links it and its DEPS; a folder that
+# tests several libraries together (test/unit/coupled) lists them in its
+# Make/options (LIBS = ..., in link order).
+define TESTDIR_template
+LIBS :=
+-include $(1)/Make/options
+$(1)_LIBS := $$(LIBS)
+endef
+TESTDIRS := $(sort $(dir $(TEST_SRCS)))
+$(foreach d,$(TESTDIRS),$(eval $(call TESTDIR_template,$(patsubst %/,%,$(d)))))
+testlibs = $(or $($(patsubst %/,%,$(dir $(1)))_LIBS),$(call testlib,$(1)) $($(call testlib,$(1))_DEPS))
 define TEST_template
 $(patsubst test/%.c,$(BUILD)/test/%,$(1)): $(patsubst %.c,$(BUILD)/obj/%.o,$(1)) \
-        $$(call libfiles,$(call testlib,$(1)) $$($(call testlib,$(1))_DEPS))
+        $$(call libfiles,$$(call testlibs,$(1)))
 	@mkdir -p $$(@D)
 	$(CC) $(LDFLAGS) -o $$@ $$^ $(EXTLIBS) $(TESTLIBS)
 endef

@@ -62,6 +62,7 @@
 #include "core/error.h"
 #include "core/log.h"
 #include "core/select.h"
+#include "coupling/channel.h"
 #include "coupling/drag/drag.h"
 
 /* The choices without ops (core/select.h), in enum order. */
@@ -265,4 +266,23 @@ int coupling_guard_relaxation(const struct drag_ops *drag,
     if (tau_min)
         *tau_min = tmin;
     return n;
+}
+
+int couple_enabled(const struct dict *coupling, int *on)
+{
+    static const char *const schemes[] = { "sequential", "concurrent", NULL };
+    int idx;
+    *on = 0;
+    if (!coupling)
+        return SIM_OK;
+    TRY(dict_get_bool_or(coupling, "coupled", 1, on));
+    TRY(dict_get_word_or(coupling, "scheme", schemes, 0, &idx));
+    if (*on) {
+        /* The channel opens after the first output is written; a bad
+         * timeout must stop the run before it touches anything. */
+        struct channel_settings cs;
+        TRY(channel_settings_default(&cs, CHANNEL_SOLID, "", "."));
+        TRY(channel_settings_from_dict(coupling, &cs));
+    }
+    return SIM_OK;
 }

@@ -75,10 +75,18 @@ struct coupling_settings {
                                        A0-03): they weigh 1/eps_j         */
 };
 
-/* Read the entries above; errors cite couplingDict's file and line. */
 /* The model choices of system/couplingDict (-listModels). */
 extern const struct model_choice coupling_choices[];
 
+/* Whether a case is coupled: system/couplingDict present (coupling may be
+ * NULL) and `coupled` (default yes); `scheme sequential|concurrent` is
+ * checked here (the DEM side does the same in both, couple_fluid.h says
+ * what differs), and so are the channel's keys (timeout, ...). Both
+ * programs call this before anything of the other phase is allocated and
+ * before any output. */
+int couple_enabled(const struct dict *coupling, int *on);
+
+/* Read the entries above; errors cite couplingDict's file and line. */
 int coupling_settings_read(const struct dict *d,
                            struct coupling_settings *s);
 

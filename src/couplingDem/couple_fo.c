@@ -14,7 +14,7 @@
 
 #include "core/dict.h"
 #include "core/error.h"
-#include "coupling/couple_dem.h"
+#include "couplingDem/couple_dem.h"
 #include "functionObjects/functionObject.h"
 
 static const char *const names[COUPLE_DEM_NVALUES] = {

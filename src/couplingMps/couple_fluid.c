@@ -13,7 +13,7 @@
  * with its state at t^{m+1}; eps^{m+1} and f_A are then computed at the new
  * grain positions and held frozen through mps_step().
  */
-#include "coupling/couple_fluid.h"
+#include "couplingMps/couple_fluid.h"
 
 #include <math.h>
 #include <stdlib.h>

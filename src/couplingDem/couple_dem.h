@@ -18,8 +18,8 @@
  *
  * Without a channel (tests): couple_dem_apply() and couple_dem_state().
  */
-#ifndef MPSDEM_COUPLING_COUPLE_DEM_H
-#define MPSDEM_COUPLING_COUPLE_DEM_H
+#ifndef MPSDEM_COUPLINGDEM_COUPLE_DEM_H
+#define MPSDEM_COUPLINGDEM_COUPLE_DEM_H
 
 #include <stddef.h>
 #include <stdint.h>
@@ -46,20 +46,12 @@ struct couple_dem {
     double *Fapplied;           /* 3n mean drag the grains received      */
     double *Fsend;              /* 3n mean drag of eq. (25)              */
     double *work;               /* 3n                                    */
-    double *slip;               /* 3n u_k - v_k (couple_output.h)       */
+    double *slip;               /* 3n u_k - v_k (couple_dem_output)      */
     double fluid_time;          /* time of the last fluid state          */
     long exchanges;
     double wait;                /* seconds waiting for the fluid side    */
     int concurrent;             /* scheme concurrent: no send at endTime */
 };
-
-/* Whether a case is coupled: system/couplingDict present (coupling may be
- * NULL) and `coupled` (default yes); `scheme sequential|concurrent` is
- * checked here (the DEM side does the same in both, couple_fluid.h says
- * what differs), and so are the channel's keys (timeout, ...). Both
- * programs call this before anything of the other phase is allocated and
- * before any output. */
-int couple_enabled(const struct dict *coupling, int *on);
 
 /* Settings from system/couplingDict; fluid density and viscosity from
  * constant/transportProperties (rho, nu); gravity g [m/s^2]. */
@@ -110,6 +102,22 @@ struct fo_ops;
 void couple_dem_values(const struct couple_dem *cd, const struct dem *d,
                        struct fo_value *v);   /* COUPLE_DEM_NVALUES */
 extern const struct fo_ops *const couple_fo_table[];
+
+/* Per-grain fields of a coupled run's <time>/dem.vtu (the state of the
+ * coupling interval that ends at the written time):
+ *   porosity        eps_k of eq. (32), frozen over the interval
+ *   fluidVelocity   u_k of eq. (33) [m/s], frozen over the interval
+ *   slipVelocity    u_k - v_k [m/s], v_k the written velocity (0 for a dry
+ *                   grain, eps_k = 1: no fluid in reach, no slip defined)
+ *   drag            the drag the grain received, averaged over the DEM
+ *                   sub-steps [N]: A F^d_k of eq. (25), B F^d_k/eps_k (35)
+ *   Model A pressureGradientForce  -V_k gradP_k (34) [N]
+ *   Model B buoyancy               -V_k rho_f g  (35) [N]
+ * Slip u_k - v_k of every grain into cd->slip. Returns 1 when cd's arrays
+ * describe d's grains (same count: no grain removed since the last
+ * exchange), 0 otherwise (then there is nothing consistent to write). */
+int couple_dem_output(struct couple_dem *cd, const struct dem *d);
+
 void couple_dem_free(struct couple_dem *cd);
 
 #endif

@@ -15,7 +15,7 @@
  * average of F^d of eq. (25) exactly, which is what the fluid's reaction
  * (36) spreads (reaction.h).
  */
-#include "coupling/couple_dem.h"
+#include "couplingDem/couple_dem.h"
 
 #include <math.h>
 #include <stdlib.h>
@@ -50,25 +50,6 @@ static int grow(struct couple_dem *cd, size_t n)
     SIM_GROW(cd->work, 3 * cap);
     SIM_GROW(cd->slip, 3 * cap);
     cd->cap = cap;
-    return SIM_OK;
-}
-
-int couple_enabled(const struct dict *coupling, int *on)
-{
-    static const char *const schemes[] = { "sequential", "concurrent", NULL };
-    int idx;
-    *on = 0;
-    if (!coupling)
-        return SIM_OK;
-    TRY(dict_get_bool_or(coupling, "coupled", 1, on));
-    TRY(dict_get_word_or(coupling, "scheme", schemes, 0, &idx));
-    if (*on) {
-        /* The channel opens after the first output is written; a bad
-         * timeout must stop the run before it touches anything. */
-        struct channel_settings cs;
-        TRY(channel_settings_default(&cs, CHANNEL_SOLID, "", "."));
-        TRY(channel_settings_from_dict(coupling, &cs));
-    }
     return SIM_OK;
 }
 

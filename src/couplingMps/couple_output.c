@@ -1,30 +1,16 @@
 /*
- * couple_output.c — per-point coupling fields of a coupled run's output
- * (Xie et al. 2025 eqs. 25, 32-36; doc/theory.md A.7-A.8): the grains' slip
- * u_k - v_k and the fluid's reaction -V_i f_A,i of eq. (36) carried through
- * the particle renumbering of mps_step() (couple_output.h).
+ * couple_output.c — the fluid's reaction -V_i f_A,i of eq. (36) in a
+ * coupled run's output (Xie et al. 2025; doc/theory.md A.8), carried
+ * through the particle renumbering of mps_step() (couple_output.h).
  */
-#include "coupling/couple_output.h"
+#include "couplingMps/couple_output.h"
 
 #include <stdlib.h>
 #include <string.h>
 
 #include "core/error.h"
-#include "coupling/couple_dem.h"
-#include "coupling/couple_fluid.h"
-#include "dem/dem.h"
+#include "couplingMps/couple_fluid.h"
 #include "mps/mps.h"
-
-int couple_dem_output(struct couple_dem *cd, const struct dem *d)
-{
-    if (cd->n != d->n || !cd->slip)
-        return 0;
-    for (size_t k = 0; k < d->n; k++)
-        for (int c = 0; c < 3; c++)
-            cd->slip[3 * k + c] = cd->wet[k]
-                ? cd->uf[3 * k + c] - d->v[3 * k + c] : 0.0;
-    return 1;
-}
 
 static int grow(struct couple_output *o, int n)
 {

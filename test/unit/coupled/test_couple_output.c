@@ -12,9 +12,9 @@
 #include <stdlib.h>
 #include <string.h>
 
-#include "coupling/couple_dem.h"
-#include "coupling/couple_fluid.h"
-#include "coupling/couple_output.h"
+#include "couplingDem/couple_dem.h"
+#include "couplingMps/couple_fluid.h"
+#include "couplingMps/couple_output.h"
 #include "dem/dem.h"
 #include "mps/mps.h"
 

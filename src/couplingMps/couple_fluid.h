@@ -37,8 +37,8 @@
  * with `ppeDivergence superficial;` the solver's scaled_divergence is set
  * (the PPE takes the divergence of eps u*, models.c).
  */
-#ifndef MPSDEM_COUPLING_COUPLE_FLUID_H
-#define MPSDEM_COUPLING_COUPLE_FLUID_H
+#ifndef MPSDEM_COUPLINGMPS_COUPLE_FLUID_H
+#define MPSDEM_COUPLINGMPS_COUPLE_FLUID_H
 
 #include <stdint.h>
 
