@@ -17,18 +17,24 @@
  * The Coulomb slider is a phase per slot (dem.h slip_mode): it starts where
  * |F^t| reaches mu |F^n| and ends where the spring stops loading
  * (s^.v^t = 0); inside it the force is -mu |F^n| s^ whatever the state's
- * length. Both are events located by ERKStep's root finding (one function
- * per slot, dem.h slip_g); the step is redone from its start to the event
- * (ARKode's state at a root is an interpolant of a step taken with the old
- * phase), the spring put at the limit there, and the integration restarted
- * (ERKStepReset). Without this the slider acts one step late, a first-order
- * error outside the error test. At accepted steps the springs are projected
- * as the contact law implies (rotation, limit, 0 out of contact: post-step
- * hook, one committing force evaluation counted as hist_evals, after which
- * ARKode re-evaluates the right-hand side), and the phases found there take
- * effect. When the neighbour list is rebuilt the slots change: the springs
- * are carried by the list (nlist_carry) and S is re-laid out
- * (ERKStepResize, which keeps the step size).
+ * length. Both are events (slipEvents): after each accepted step the
+ * switching functions (dem.h slip_g) at its end are compared with those at
+ * its start; where one fell through 0, or a contact ended, the event is
+ * located on exact re-integrations from the step's start (locate_event:
+ * ARKode's own root finding works on its interpolant, which was not
+ * accurate enough), the state taken just past it, the springs projected
+ * there (which switches the phases and puts a slipping spring at the
+ * limit) and the integration restarted (ERKStepReset). A phase that starts
+ * and ends inside a step shows in the switching functions at the stages
+ * (eval): the step is redone in quarters. Without events the slider acts
+ * one step late, a first-order error outside the error test. At accepted
+ * steps the springs are projected as the contact law implies (rotation,
+ * limit, 0 out of contact: post-step hook, one committing force
+ * evaluation counted as hist_evals, after which ARKode re-evaluates the
+ * right-hand side), and the phases found there take effect. When the
+ * neighbour list is rebuilt the slots change: the springs are carried by
+ * the list (nlist_carry) and S is re-laid out (ERKStepResize, which keeps
+ * the step size).
  *
  * Step size: ARKode's error control with rtol and a vector atol
  * (positions and springs, velocities, spins), bounded by a stability
