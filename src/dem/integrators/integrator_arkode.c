@@ -645,10 +645,14 @@ static int ark_advance(void *ctx, struct dem *d, double t_end)
         yy = N_VGetArrayPointer(a->y);
         if (nslot && (event || memcmp(a->mode, a->mode_next, nslot))) {
             /* slip phases began or ended at this state: restart with
-             * them */
+             * them (without events they take effect at the next stage:
+             * a restart at every step of a dense pack would cost an
+             * evaluation per step) */
             memcpy(a->mode, a->mode_next, nslot);
-            ARKCHECK(ERKStepReset(a->mem, t, a->y));
-            ARKCHECK(ERKStepSetStopTime(a->mem, t_end));
+            if (a->detect) {
+                ARKCHECK(ERKStepReset(a->mem, t, a->y));
+                ARKCHECK(ERKStepSetStopTime(a->mem, t_end));
+            }
             if (a->detect && eval_g(a, t, a->y, a->g0))
                 return sim_error(SIM_ERR_NUMERIC, "arkode: force "
                                  "evaluation failed at t = %.9g s", t);
