@@ -127,8 +127,9 @@ struct dem {
      * marks the slots found sliding at the last committing evaluation
      * (which updates it); while set and the spring is still loaded the
      * slot slides. slip_g, when set, receives per slot the switching
-     * function s^.v^t of a slip phase (1 otherwise): its zero from above
-     * ends the phase, an event the integrator locates. */
+     * function: s^.v^t in a slip phase, 1 - |F^t|/(mu |F^n|) - 1e-7
+     * in stick, HUGE_VAL out of contact; its zero from above starts or
+     * ends a phase, an event the integrator locates. */
     unsigned char *slip_mode;
     double *slip_g;
     /* acc, alpha, cpl.fd and the histories are those of the current x, v,

@@ -92,13 +92,17 @@ static inline void spring_rate_pair(const struct contact_geom *g,
  * the spring at the limit there. */
 static inline const double *slip_spring(const struct dem *d, size_t slot,
                                         const double *hs, const double *vt,
-                                        double *buf)
+                                        int commit, double *buf)
 {
     if (!d->slip_mode || !d->slip_mode[slot])
         return hs;
     double s2 = hs[0] * hs[0] + hs[1] * hs[1] + hs[2] * hs[2];
     double sv = hs[0] * vt[0] + hs[1] * vt[1] + hs[2] * vt[2];
-    if (!(s2 > 0) || !(sv > 0))
+    /* a committing evaluation puts the spring of a slipping slot at the
+     * limit even where its phase ends (sv <= 0): the state's spring has
+     * been integrated with v^t since the last projection while the limit
+     * mu |F^n|/kt moved, so it is not at the limit there */
+    if (!(s2 > 0) || !(sv > 0 || commit))
         return hs;
     double k = 1.0 / sqrt(s2);
     for (int a = 0; a < 3; a++)
@@ -130,11 +134,13 @@ static inline void slip_after(struct dem *d, size_t slot, const double *hs,
                              && !(mode && !(sv > 0));
 }
 
-/* A slot out of contact: no slip phase, no event. */
+/* A slot out of contact: no slip phase; its switching function is
+ * HUGE_VAL (the integrator treats the end of a contact as an event, so
+ * that a slip phase just before it is not hidden in the step). */
 static inline void slip_open(struct dem *d, size_t slot, int commit)
 {
     if (d->slip_g)
-        d->slip_g[slot] = 1.0;
+        d->slip_g[slot] = HUGE_VAL;
     if (commit && d->slip_mode)
         d->slip_mode[slot] = 0;
 }
@@ -196,7 +202,7 @@ static void pair_row(struct dem *d, size_t i, const double *x, const double *v,
         const double *hs = d->spring_in ? &d->spring_in[3 * p]
                                         : &d->hist[3 * p];
         double sb[3];
-        const double *hl = slip_spring(d, p, hs, g.vt, sb);
+        const double *hl = slip_spring(d, p, hs, g.vt, commit, sb);
         if (fused)
             contact_eval_fused(&d->law, &g, hl, tau, hn, &res);
         else
@@ -256,7 +262,8 @@ static void wall_row(struct dem *d, size_t i, const double *x, const double *v,
         const double *hs = d->spring_in ? &d->spring_in[wk + hk]
                                         : &d->whist[hk];
         double sb[3];
-        const double *hl = slip_spring(d, (wk + hk) / 3, hs, g.vt, sb);
+        const double *hl = slip_spring(d, (wk + hk) / 3, hs, g.vt, commit,
+                                        sb);
         if (fused)
             contact_eval_fused(&d->law, &g, hl, tau, hn, &res);
         else

@@ -17,18 +17,24 @@
  * The Coulomb slider is a phase per slot (dem.h slip_mode): it starts where
  * |F^t| reaches mu |F^n| and ends where the spring stops loading
  * (s^.v^t = 0); inside it the force is -mu |F^n| s^ whatever the state's
- * length. Both are events located by ERKStep's root finding (one function
- * per slot, dem.h slip_g); the step is redone from its start to the event
- * (ARKode's state at a root is an interpolant of a step taken with the old
- * phase), the spring put at the limit there, and the integration restarted
- * (ERKStepReset). Without this the slider acts one step late, a first-order
- * error outside the error test. At accepted steps the springs are projected
- * as the contact law implies (rotation, limit, 0 out of contact: post-step
- * hook, one committing force evaluation counted as hist_evals, after which
- * ARKode re-evaluates the right-hand side), and the phases found there take
- * effect. When the neighbour list is rebuilt the slots change: the springs
- * are carried by the list (nlist_carry) and S is re-laid out
- * (ERKStepResize, which keeps the step size).
+ * length. Both are events (slipEvents): after each accepted step the
+ * switching functions (dem.h slip_g) at its end are compared with those at
+ * its start; where one fell through 0, or a contact ended, the event is
+ * located on exact re-integrations from the step's start (locate_event:
+ * ARKode's own root finding works on its interpolant, which was not
+ * accurate enough), the state taken just past it, the springs projected
+ * there (which switches the phases and puts a slipping spring at the
+ * limit) and the integration restarted (ERKStepReset). A phase that starts
+ * and ends inside a step shows in the switching functions at the stages
+ * (eval): the step is redone in quarters. Without events the slider acts
+ * one step late, a first-order error outside the error test. At accepted
+ * steps the springs are projected as the contact law implies (rotation,
+ * limit, 0 out of contact: post-step hook, one committing force
+ * evaluation counted as hist_evals, after which ARKode re-evaluates the
+ * right-hand side), and the phases found there take effect. When the
+ * neighbour list is rebuilt the slots change: the springs are carried by
+ * the list (nlist_carry) and S is re-laid out (ERKStepResize, which keeps
+ * the step size).
  *
  * Step size: ARKode's error control with rtol and a vector atol
  * (positions and springs, velocities, spins), bounded by a stability
@@ -66,7 +72,7 @@
 struct ark {
     SUNContext sun;
     void *mem;
-    N_Vector y, atol, scratch, yprev;
+    N_Vector y, atol, scratch, yprev, yhi;
     size_t n;                  /* grains the vectors were made for      */
     size_t npairs;             /* pair slots of the spring block        */
     long nbuilds;              /* neighbour list the slots belong to    */
@@ -78,16 +84,20 @@ struct ark {
     int need_eval;             /* no evaluation since the set-up        */
     unsigned char *mode;       /* slip phase per slot (dem.h)           */
     unsigned char *mode_next;  /* as found at the last accepted state   */
-    int *rootdir;              /* -1 per slot: slip ends only           */
-    int *rootinfo;             /* slots whose slip phase just ended     */
-    double *gcache;            /* switching functions of the last
-                                  projection, for ARKode's root check at
-                                  the same accepted state               */
-    double t_gcache;
-    int gcache_ok;
-    size_t rootdir_cap;
+    double *gcache;            /* switching functions at the state of the
+                                  last projection (post_step), with the
+                                  phases the step was taken with        */
+    double *g0;                /* the same at the start of the current
+                                  step, with the current phases         */
+    double *glo;               /* scratch for the event search          */
+    double *gst;               /* switching functions of the last stage */
+    double *gmin;              /* their minimum over the current step's
+                                  stages (g_val)                        */
+    double hcap_until;         /* steps capped to hcap until this time  */
+    size_t slot_cap;
     long events;               /* slip starts and ends located          */
-    size_t nroots;             /* armed root functions                  */
+    long redos;                /* steps redone for a stage's sign change */
+    int detect;                /* locate slip events (slipEvents)       */
 };
 
 /* Offset of the spring block in the state. */
@@ -110,11 +120,21 @@ static int eval(struct ark *a, double t, N_Vector y, N_Vector ydot)
     d->spring_in = yy + off;
     d->spring_rate = yd + off;
     d->slip_mode = a->mode;
+    d->slip_g = a->detect ? a->gst : NULL;
     int rc = dem_forces(d, t, yy, yy + n3, yy + 2 * n3, 0.0, 0, yd + n3,
                         yd + 2 * n3);
     d->spring_in = NULL;
     d->spring_rate = NULL;
     d->slip_mode = NULL;
+    d->slip_g = NULL;
+    if (a->detect) {   /* a phase hidden inside a step shows at stages */
+        size_t nslot = spring_len(d) / 3;
+        for (size_t k = 0; k < nslot; k++) {
+            double g = a->gst[k] == HUGE_VAL && a->g0[k] != HUGE_VAL
+                       ? -1.0 : a->gst[k];
+            a->gmin[k] = g < a->gmin[k] ? g : a->gmin[k];
+        }
+    }
     if (a->impulse)
         memcpy(yd + 3 * n3, d->cpl.fd, n3 * sizeof *yd);
     return rc;
@@ -182,14 +202,13 @@ static int post_step(realtype t, N_Vector y, void *ud)
     d->spring_in = yy + off;
     d->slip_mode = a->mode_next;
     d->slip_g = a->gcache;   /* unchanged by the projection below: it
-                                rescales slipping springs only */
+                                rotates springs and rescales slipping
+                                ones only */
     int rc = dem_forces(d, t, yy, yy + n3, yy + 2 * n3, 0.0, 1, s + n3,
                         s + 2 * n3);
     d->spring_in = NULL;
     d->slip_mode = NULL;
     d->slip_g = NULL;
-    a->t_gcache = t;
-    a->gcache_ok = a->gcache != NULL;
     if (rc)
         return -1;
     d->stats.fevals--;
@@ -200,20 +219,14 @@ static int post_step(realtype t, N_Vector y, void *ud)
     return 0;
 }
 
-/* ARKode root function: the slip switching function of every slot
- * (dem.h, slip_g), whose zeros from above are the ends of slip phases. */
-static int slip_roots(realtype t, N_Vector y, realtype *gout, void *ud)
+/* The slip switching functions of every slot (dem.h, slip_g) at (t, y)
+ * with the current phases: a zero from above is the start of a slip phase
+ * (stick: |F^t| reaches mu |F^n|) or its end (slip: s^.v^t falls through
+ * 0). One force evaluation, counted with the projections. */
+static int eval_g(struct ark *a, double t, N_Vector y, double *gout)
 {
-    struct ark *a = ud;
     struct dem *d = a->d;
     size_t n3 = 3 * d->n, off = spring_offset(a);
-    if (a->gcache_ok && t == a->t_gcache) {
-        /* ARKode's check at the accepted state the hook has just
-         * evaluated (arkode.c: arkCompleteStep, then arkRootCheck3) */
-        memcpy(gout, a->gcache, spring_len(d) / 3 * sizeof *gout);
-        a->gcache_ok = 0;
-        return 0;
-    }
     double *yy = N_VGetArrayPointer(y), *s = N_VGetArrayPointer(a->scratch);
     d->spring_in = yy + off;
     d->slip_g = gout;
@@ -225,7 +238,7 @@ static int slip_roots(realtype t, N_Vector y, realtype *gout, void *ud)
     d->slip_mode = NULL;
     d->stats.fevals--;
     d->stats.hist_evals++;
-    return rc == SIM_OK ? 0 : -1;
+    return rc;
 }
 
 static void err_handler(int code, const char *module, const char *func,
@@ -249,7 +262,8 @@ static void free_vectors(struct ark *a)
     if (a->atol) N_VDestroy(a->atol);
     if (a->scratch) N_VDestroy(a->scratch);
     if (a->yprev) N_VDestroy(a->yprev);
-    a->y = a->atol = a->scratch = a->yprev = NULL;
+    if (a->yhi) N_VDestroy(a->yhi);
+    a->y = a->atol = a->scratch = a->yprev = a->yhi = NULL;
 }
 
 /* New state vectors for the current grains and neighbour list: x, v, w and
@@ -265,15 +279,17 @@ static int new_vectors(struct ark *a, struct dem *d, const double *old)
     N_Vector at = N_VNew_Serial((sunindextype)len, a->sun);
     N_Vector sc = N_VNew_Serial((sunindextype)len, a->sun);
     N_Vector yp = N_VNew_Serial((sunindextype)len, a->sun);
-    if (!y || !at || !sc || !yp) {
+    N_Vector yh = N_VNew_Serial((sunindextype)len, a->sun);
+    if (!y || !at || !sc || !yp || !yh) {
         if (y) N_VDestroy(y);
         if (at) N_VDestroy(at);
         if (sc) N_VDestroy(sc);
         if (yp) N_VDestroy(yp);
+        if (yh) N_VDestroy(yh);
         return sim_error(SIM_ERR_NOMEM, "ARKode vectors of length %zu", len);
     }
     free_vectors(a);
-    a->y = y, a->atol = at, a->scratch = sc, a->yprev = yp;
+    a->y = y, a->atol = at, a->scratch = sc, a->yprev = yp, a->yhi = yh;
     /* fused stage combinations: the vector arithmetic of a 7-stage pair is
      * as costly as the contact forces of a dense pack otherwise */
     N_VEnableFusedOps_Serial(a->y, SUNTRUE);
@@ -308,7 +324,7 @@ static int new_vectors(struct ark *a, struct dem *d, const double *old)
     return SIM_OK;
 }
 
-static int init_roots(struct ark *a, struct dem *d);
+static int init_slots(struct ark *a, struct dem *d);
 
 /* After a set-up or relayout (before ARKode's first step from the new
  * state): the slip phases and the contact state the stability function
@@ -320,7 +336,9 @@ static int commit(struct ark *a, double t)
         return sim_error(SIM_ERR_NUMERIC, "arkode: force evaluation "
                          "failed at t = %.9g s", t);
     memcpy(a->mode, a->mode_next, spring_len(a->d) / 3);
-    a->gcache_ok = 0;
+    if (a->detect && eval_g(a, t, a->y, a->g0))
+        return sim_error(SIM_ERR_NUMERIC, "arkode: force evaluation "
+                         "failed at t = %.9g s", t);
     ARKCHECK(ERKStepReset(a->mem, t, a->y));
     return SIM_OK;
 }
@@ -345,7 +363,7 @@ static int setup(struct ark *a, struct dem *d)
     ARKCHECK(ERKStepSetMaxNumSteps(a->mem, a->p.max_steps));
     if (d->h_next > 0)
         ARKCHECK(ERKStepSetInitStep(a->mem, d->h_next));
-    TRY(init_roots(a, d));
+    TRY(init_slots(a, d));
     a->reset = 0;
     a->need_eval = 1;
     return SIM_OK;
@@ -362,38 +380,16 @@ static int relayout(struct ark *a, struct dem *d, double t)
     TRY(rc);
     ARKCHECK(ERKStepResize(a->mem, a->y, 1.0, t, NULL, NULL));
     ARKCHECK(ERKStepSVtolerances(a->mem, a->p.rtol, a->atol));
-    return init_roots(a, d);
+    return init_slots(a, d);
 }
 
-/* One root per spring slot (none without friction springs). */
-/* Arm (on) or disarm the root functions. */
-static int arm_roots(struct ark *a, struct dem *d, int on)
-{
-    size_t nr = spring_len(d) / 3;
-    int use = a->p.slip_events == 1
-              || (a->p.slip_events == 0 && d->n <= DEM_SLIP_EVENTS_MAX);
-    if (!on || !use || d->law.tangential->history == 0
-        || !(d->law.c.mu > 0))
-        nr = 0;
-    a->nroots = nr;
-    if (nr > (size_t)INT32_MAX)
-        return sim_error(SIM_ERR_INPUT, "arkode: %zu contact slots", nr);
-    ARKCHECK(ERKStepRootInit(a->mem, (int)nr, nr ? slip_roots : NULL));
-    if (nr == 0)
-        return SIM_OK;
-    for (size_t k = 0; k < nr; k++)
-        a->rootdir[k] = -1;
-    ARKCHECK(ERKStepSetRootDirection(a->mem, a->rootdir));
-    ARKCHECK(ERKStepSetNoInactiveRootWarn(a->mem));
-    return SIM_OK;
-}
-
-static int init_roots(struct ark *a, struct dem *d)
+/* Per-slot arrays for the current slots; the slot numbering changed, so
+ * the slip phases are found again by the committing evaluation that
+ * follows every set-up or relayout. */
+static int init_slots(struct ark *a, struct dem *d)
 {
     size_t nr = spring_len(d) / 3, cap = nr ? nr : 1;
-    /* the slot numbering changed: slip phases are found again by the
-     * committing evaluation that follows every set-up */
-    if (cap > a->rootdir_cap) {
+    if (cap > a->slot_cap) {
         unsigned char *m = sim_realloc(a->mode, cap);
         if (!m)
             return SIM_ERR_NOMEM;
@@ -402,23 +398,128 @@ static int init_roots(struct ark *a, struct dem *d)
         if (!m)
             return SIM_ERR_NOMEM;
         a->mode_next = m;
-        int *r = sim_realloc(a->rootdir, cap * sizeof *r);
-        if (!r)
-            return SIM_ERR_NOMEM;
-        a->rootdir = r;
-        r = sim_realloc(a->rootinfo, cap * sizeof *r);
-        if (!r)
-            return SIM_ERR_NOMEM;
-        a->rootinfo = r;
         double *g = sim_realloc(a->gcache, cap * sizeof *g);
         if (!g)
             return SIM_ERR_NOMEM;
         a->gcache = g;
-        a->rootdir_cap = cap;
+        g = sim_realloc(a->g0, cap * sizeof *g);
+        if (!g)
+            return SIM_ERR_NOMEM;
+        a->g0 = g;
+        g = sim_realloc(a->glo, cap * sizeof *g);
+        if (!g)
+            return SIM_ERR_NOMEM;
+        a->glo = g;
+        g = sim_realloc(a->gst, cap * sizeof *g);
+        if (!g)
+            return SIM_ERR_NOMEM;
+        a->gst = g;
+        g = sim_realloc(a->gmin, cap * sizeof *g);
+        if (!g)
+            return SIM_ERR_NOMEM;
+        a->gmin = g;
+        a->slot_cap = cap;
     }
     memset(a->mode, 0, nr);
+    int use = a->p.slip_events == 1
+              || (a->p.slip_events == 0 && d->n <= DEM_SLIP_EVENTS_MAX);
+    a->detect = use && nr > 0 && d->law.tangential->history != 0
+                && d->law.c.mu > 0;
     a->need_eval = 1;
-    return arm_roots(a, d, 1);
+    return SIM_OK;
+}
+
+/* Switching function g of a slot whose value was g0 at the start of the
+ * step: out of contact (HUGE_VAL, dem_forces.c slip_open) after having
+ * been in contact counts as -1, so that the end of a contact is located
+ * as an event and a slip phase just before it cannot hide in the step. */
+static double g_val(double g, double g0)
+{
+    return g == HUGE_VAL && g0 != HUGE_VAL ? -1.0 : g;
+}
+
+static int g_crossed(double g0, double g)
+{
+    return g0 > 0 && g_val(g, g0) <= 0;
+}
+
+/* Smallest switching function at the state of the last projection over
+ * the slots flagged in set (glo[k] != 0). */
+static double g_min(const struct ark *a, size_t nslot)
+{
+    double g = INFINITY;
+    for (size_t k = 0; k < nslot; k++)
+        if (a->glo[k] != 0)
+            g = fmin(g, g_val(a->gcache[k], a->g0[k]));
+    return g;
+}
+
+/* Integrate from (t0, yprev) to tm exactly (ARKode's state there, the
+ * springs projected by the hook, gcache its switching functions). */
+static int redo_to(struct ark *a, double t0, double tm)
+{
+    ARKCHECK(ERKStepReset(a->mem, t0, a->yprev));
+    ARKCHECK(ERKStepSetStopTime(a->mem, tm));
+    double t = t0;
+    while (t < tm) {
+        int flag = ERKStepEvolve(a->mem, tm, a->y, &t, ARK_NORMAL);
+        if (flag < 0)
+            return sim_error(SIM_ERR_EXTERNAL, "arkode: ERKStepEvolve "
+                             "failed at t = %.9g s: %s %s", t,
+                             ERKStepGetReturnFlagName(flag), a->msg);
+        if (flag == ARK_TSTOP_RETURN)
+            break;
+    }
+    return SIM_OK;
+}
+
+/* The step (t0, yprev) -> (t1, y) changed the sign of a switching function
+ * from above (g0 > 0 >= gcache): a slip phase started or ended inside it.
+ * Locate the earliest such zero of the flagged slots by regula falsi
+ * (Illinois) on exact re-integrations from t0 (ARKode's interpolant is
+ * not accurate enough there: with the Hermite interpolant of degree 4 a
+ * root was placed 2 us early in a 135 us contact), end at the right end
+ * of the bracket (the event has happened there), where the projection
+ * switches the phases, and restart. *t: t1 in, the event out. */
+static int locate_event(struct ark *a, double t0, double *t)
+{
+    size_t nslot = spring_len(a->d) / 3;
+    double tlo = t0, thi = *t, ghi = INFINITY, glo = INFINITY;
+    for (size_t k = 0; k < nslot; k++) {
+        a->glo[k] = g_crossed(a->g0[k], a->gcache[k]);
+        if (a->glo[k] != 0) {
+            ghi = fmin(ghi, g_val(a->gcache[k], a->g0[k]));
+            glo = fmin(glo, a->g0[k]);
+        }
+    }
+    N_VScale(1.0, a->y, a->yhi);
+    /* the start of a slip phase saturates at g = -1e-7 past the zero
+     * (the law caps |F^t|), which stalls regula falsi: bisect until two
+     * points lie before the zero, then take secants from that side,
+     * landing just past the estimate */
+    double ttol = 1e-6 * (thi - tlo), tlo2 = tlo, glo2 = glo;
+    int have2 = 0;
+    (void)ghi;
+    for (int it = 0; it < 100 && thi - tlo > ttol; it++) {
+        double tm = 0.5 * (tlo + thi);
+        if (have2 && glo2 > glo && glo2 < HUGE_VAL)
+            tm = tlo + glo * (tlo - tlo2) / (glo2 - glo) + 0.5 * ttol;
+        if (!(tm > tlo && tm < thi))
+            tm = 0.5 * (tlo + thi);
+        TRY(redo_to(a, t0, tm));
+        double gm = g_min(a, nslot);
+        if (gm <= 0) {
+            thi = tm, ghi = gm;
+            N_VScale(1.0, a->y, a->yhi);
+        } else {
+            tlo2 = tlo, glo2 = glo, have2 = 1;
+            tlo = tm, glo = gm;
+        }
+    }
+    N_VScale(1.0, a->yhi, a->y);
+    *t = thi;
+    a->events++;
+    return SIM_OK;
 }
 
 static int ark_create(struct dem *d, const struct dem_integrator_params *p,
@@ -496,59 +597,67 @@ static int ark_advance(void *ctx, struct dem *d, double t_end)
          * changes the spring slots) is done between steps */
         t_prev = t;
         N_VScale(1.0, a->y, a->yprev);
+        if (a->detect)
+            for (size_t k = 0; k < spring_len(d) / 3; k++)
+                a->gmin[k] = INFINITY;
+        if (a->hcap_until > 0 && t >= a->hcap_until) {
+            a->hcap_until = 0;
+            ARKCHECK(ERKStepSetMaxStep(a->mem, 0.0));
+        }
         int flag = ERKStepEvolve(a->mem, t_end, a->y, &t, ARK_ONE_STEP);
         if (flag < 0)
             return sim_error(SIM_ERR_EXTERNAL,
                              "arkode: ERKStepEvolve failed at t = %.9g s: %s "
                              "%s", t, ERKStepGetReturnFlagName(flag), a->msg);
-        if (flag == ARK_ROOT_RETURN) {
-            /* A slip phase starts or ends at t. ARKode's step went past
-             * it with the old phase, and its interpolant at t carries
-             * that: redo the step from its start to t exactly, then
-             * switch the phase (the spring at the limit) and restart. */
-            double troot = t;
-            size_t nr = spring_len(d) / 3;
-            ARKCHECK(ERKStepGetRootInfo(a->mem, a->rootinfo));
-            ARKCHECK(ERKStepReset(a->mem, t_prev, a->yprev));
-            TRY(arm_roots(a, d, 0));
-            ARKCHECK(ERKStepSetStopTime(a->mem, troot));
-            t = t_prev;
-            while (t < troot) {
-                flag = ERKStepEvolve(a->mem, troot, a->y, &t, ARK_NORMAL);
-                if (flag < 0)
-                    return sim_error(SIM_ERR_EXTERNAL, "arkode: "
-                                     "ERKStepEvolve failed at t = %.9g s: "
-                                     "%s %s", t,
-                                     ERKStepGetReturnFlagName(flag), a->msg);
-                if (flag == ARK_TSTOP_RETURN)
-                    break;
+        size_t nslot = spring_len(d) / 3;
+        int event = 0;
+        if (a->detect) {
+            for (size_t k = 0; k < nslot && !event; k++)
+                event = g_crossed(a->g0[k], a->gcache[k]);
+            int hidden = 0;
+            for (size_t k = 0; k < nslot && !event && !hidden; k++)
+                hidden = a->g0[k] > 0 && a->gmin[k] <= 0;
+            if (hidden && !event && t - t_prev > 1e-6 * t) {
+                /* a stage saw a switching function at or below 0 although
+                 * both ends are above: a phase may start and end inside
+                 * the step. Redo it in quarters (recursively). */
+                double h = 0.25 * (t - t_prev);
+                ARKCHECK(ERKStepReset(a->mem, t_prev, a->yprev));
+                ARKCHECK(ERKStepSetMaxStep(a->mem, h));
+                ARKCHECK(ERKStepSetInitStep(a->mem, h));
+                ARKCHECK(ERKStepSetStopTime(a->mem, t_end));
+                a->hcap_until = fmax(a->hcap_until, t);
+                N_VScale(1.0, a->yprev, a->y);
+                t = t_prev;
+                a->redos++;
+                continue;
             }
-            t = troot;
-            if (post_step(t, a->y, a))
-                return sim_error(SIM_ERR_NUMERIC, "arkode: projection of "
-                                 "the springs failed at t = %.9g s", t);
-            /* the commit cannot see the switch itself (it happens at the
-             * limit): the slots whose function vanished change phase */
-            for (size_t k = 0; k < nr; k++)
-                a->mode[k] = a->rootinfo[k] ? !a->mode[k] : a->mode_next[k];
-            a->gcache_ok = 0;
-            TRY(arm_roots(a, d, 1));
-            ARKCHECK(ERKStepReset(a->mem, t, a->y));
-            ARKCHECK(ERKStepSetStopTime(a->mem, t_end));
-            a->events++;
-            continue;
+            if (event) {
+                TRY(locate_event(a, t_prev, &t));
+                /* the projection at the event switches the phases */
+                if (post_step(t, a->y, a))
+                    return sim_error(SIM_ERR_NUMERIC, "arkode: projection "
+                                     "of the springs failed at t = %.9g s",
+                                     t);
+                flag = t < t_end ? ARK_SUCCESS : ARK_TSTOP_RETURN;
+            }
         }
         yy = N_VGetArrayPointer(a->y);
-        size_t nslot = spring_len(d) / 3;
-        if (nslot && memcmp(a->mode, a->mode_next, nslot)) {
-            /* slip phases began or ended at this accepted step: ARKode
-             * re-evaluates the switching functions with them */
+        if (nslot && (event || memcmp(a->mode, a->mode_next, nslot))) {
+            /* slip phases began or ended at this state: restart with
+             * them (without events they take effect at the next stage:
+             * a restart at every step of a dense pack would cost an
+             * evaluation per step) */
             memcpy(a->mode, a->mode_next, nslot);
-            a->gcache_ok = 0;
-            if (flag != ARK_TSTOP_RETURN && a->nroots) {
+            if (a->detect) {
                 ARKCHECK(ERKStepReset(a->mem, t, a->y));
                 ARKCHECK(ERKStepSetStopTime(a->mem, t_end));
             }
+            if (a->detect && eval_g(a, t, a->y, a->g0))
+                return sim_error(SIM_ERR_NUMERIC, "arkode: force "
+                                 "evaluation failed at t = %.9g s", t);
+        } else if (a->detect) {
+            memcpy(a->g0, a->gcache, nslot * sizeof *a->g0);
         }
         if (flag != ARK_TSTOP_RETURN && t < t_end
             && nlist_stale(&d->nl, d->n, yy)) {
@@ -602,9 +711,11 @@ static void ark_destroy(void *ctx)
     if (a->mem)
         ERKStepFree(&a->mem);
     free_vectors(a);
-    free(a->rootdir);
-    free(a->rootinfo);
     free(a->gcache);
+    free(a->g0);
+    free(a->glo);
+    free(a->gst);
+    free(a->gmin);
     free(a->mode);
     free(a->mode_next);
     SUNContext_Free(&a->sun);
