@@ -102,8 +102,8 @@ struct solver_ops {
     void (*stats)(struct solver *sv);
     /* Free what create made (the scaffold frees its own part). */
     void (*cleanup)(struct solver *sv);
-    /* NULL: the program cannot run coupled (couplingDict is refused by
-     * couple_enabled's own checks only; a coupled case is an error). */
+    /* NULL: the program runs alone only (a case whose couplingDict says
+     * coupled yes is an input error). */
     const struct solver_coupling *coupling;
 };
 

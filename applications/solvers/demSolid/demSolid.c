@@ -58,7 +58,8 @@ static int create_grains(struct solid *s)
     char rel[256], path[4200];
     TRY(app_read_dict(&s->sv.app, "constant/demProperties", &s->props));
     TRY(dem_read_properties(s->props, d));
-    TRY(app_read_dict_optional(&s->sv.app, "system/particleDict", &s->particles));
+    TRY(app_read_dict_optional(&s->sv.app, "system/particleDict",
+                               &s->particles));
     s->dim = 3;
     if (s->particles)
         TRY(dem_read_walls(s->particles, s->sv.app.case_abs, d, &s->dim));

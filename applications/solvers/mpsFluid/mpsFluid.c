@@ -241,7 +241,8 @@ static int create_fluid(struct fluid *f)
     int rc;
 
     TRY(read_patches(f));
-    TRY(app_read_dict(&f->sv.app, "constant/transportProperties", &f->transport));
+    TRY(app_read_dict(&f->sv.app, "constant/transportProperties",
+                      &f->transport));
     TRY(gravity_case(&f->sv.app, f->dim, g, &f->gravity));
     TRY(app_read_dict(&f->sv.app, "system/mpsSchemes", &f->schemes));
     TRY(app_read_dict(&f->sv.app, "system/mpsSolution", &f->solution));
