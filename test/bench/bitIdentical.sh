@@ -12,7 +12,8 @@
 # Default cases:
 #   mpsFluid/hydrostaticTank2D:0.05 mpsFluid/damBreak2D:0.02
 #   mpsFluid/damBreakObstacle:0.01 mpsDem/singleGrainSettling:0.02
-# A case whose Allrun uses runTandem runs coupled (mpsFluid + demSolid).
+# A case whose Allrun uses runTandem runs coupled (mpsFluid + demSolid),
+# one whose Allrun runs demSolid runs demSolid alone.
 #
 # Output, one line per case and field (cloud.field_component, summed over
 # every written file of that cloud):
@@ -61,6 +62,8 @@ run_case()
         runApplication genParticles > /dev/null || exit 1
         if grep -qs '^[^#]*runTandem' Allrun; then
             runTandem mpsFluid demSolid > /dev/null || exit 1
+        elif grep -qs '^[^#]*runApplication demSolid' Allrun; then
+            runApplication demSolid > /dev/null || exit 1
         else
             runApplication mpsFluid > /dev/null || exit 1
         fi
@@ -80,12 +83,13 @@ for spec in "$@"; do
     case "$c" in /*) src=$c ;; *) src="$ROOT/tutorials/$c" ;; esac
     name=${c#"$ROOT/tutorials/"}
     [ -d "$src" ] || { echo "$name  no such case"; status=2; continue; }
+    ran=1
     for side in old new; do
         bin=$OLD; [ $side = new ] && bin=$NEW
         run_case "$bin" "$src" "$W/$side/$name" "$end" \
-            || { echo "$name  the $side run failed (see $W/$side/$name/log.*)"; status=2; }
+            || { echo "$name  the $side run failed (see $W/$side/$name/log.*)"; status=2; ran=0; }
     done
-    [ $status -eq 2 ] && continue
+    [ $ran -eq 1 ] || continue
     nfiles=0 nbytes=0 missing=0
     diffs="$W/${name////_}.diffs"; : > "$diffs"
     while IFS= read -r rel; do

@@ -23,71 +23,52 @@
 #include <math.h>
 #include <stdio.h>
 #include <string.h>
-#include <sys/stat.h>
 #include <unistd.h>
 
-#include "core/app.h"
 #include "core/dict.h"
 #include "core/error.h"
 #include "core/gravity.h"
 #include "core/log.h"
-#include "core/time.h"
 #include "couplingDem/couple_dem.h"
 #include "coupling/models.h"
 #include "dem/dem.h"
 #include "dem/dem_case.h"
 #include "dem/functionObjects/dem_fo.h"
 #include "io/vtu.h"
+#include "solver/solver.h"
 
 struct solid {
-    struct app app;
-    struct dict *control, *props, *solution, *particles, *gravity;
-    struct dict *coupling, *transport;  /* coupled runs only            */
-    int coupled;
+    struct solver sv;                   /* first: the hooks cast back   */
+    struct dict *props, *solution, *particles, *gravity;
+    struct dict *transport;             /* coupled runs only            */
     struct couple_dem cd;
     struct fo_value values[COUPLE_DEM_NVALUES];
-    struct run_time rt;
     struct dem d;
     struct dem_solution sol;
     void *integ;
-    struct fo_list *fos;
-    struct fo_scene scene;
     struct vtu_cloud cloud;
     struct vtu_field fields[5];
     const char *patch_ptrs[DEM_MAX_PATCHES];
     int dim;
 };
 
-/* controlDict, and system/couplingDict if there is one: a coupled run
- * restarts (startFrom latestTime) only from a time that holds both
- * clouds. */
-static int create_time(struct solid *s)
-{
-    TRY(app_read_dict(&s->app, "system/controlDict", &s->control));
-    TRY(app_read_dict_optional(&s->app, "system/couplingDict", &s->coupling));
-    TRY(couple_enabled(s->coupling, &s->coupled));
-    static const char *const alone[] = { "dem.vtu", NULL };
-    static const char *const both[] = { "dem.vtu", "fluid.vtu", NULL };
-    return time_read(s->control, s->app.case_abs, s->coupled ? both : alone,
-                     &s->rt);
-}
-
 static int create_grains(struct solid *s)
 {
     struct dem *d = &s->d;
     char rel[256], path[4200];
-    TRY(app_read_dict(&s->app, "constant/demProperties", &s->props));
+    TRY(app_read_dict(&s->sv.app, "constant/demProperties", &s->props));
     TRY(dem_read_properties(s->props, d));
-    TRY(app_read_dict_optional(&s->app, "system/particleDict", &s->particles));
+    TRY(app_read_dict_optional(&s->sv.app, "system/particleDict",
+                               &s->particles));
     s->dim = 3;
     if (s->particles)
-        TRY(dem_read_walls(s->particles, s->app.case_abs, d, &s->dim));
-    TRY(gravity_case(&s->app, s->dim, d->gravity, &s->gravity));
-    snprintf(rel, sizeof rel, "%s/dem.vtu", s->rt.name);
-    TRY(dem_read_grains(app_path(&s->app, rel, path, sizeof path), d));
-    d->t = s->rt.value;
+        TRY(dem_read_walls(s->particles, s->sv.app.case_abs, d, &s->dim));
+    TRY(gravity_case(&s->sv.app, s->dim, d->gravity, &s->gravity));
+    snprintf(rel, sizeof rel, "%s/dem.vtu", s->sv.rt.name);
+    TRY(dem_read_grains(app_path(&s->sv.app, rel, path, sizeof path), d));
+    d->t = s->sv.rt.value;
     TRY(dem_setup(d));                 /* radii, masses, Rayleigh step */
-    TRY(app_read_dict(&s->app, "system/demSolution", &s->solution));
+    TRY(app_read_dict(&s->sv.app, "system/demSolution", &s->solution));
     TRY(dem_read_solution(s->solution, d, &s->sol));
     TRY(dem_setup(d));                 /* neighbour list with the skin  */
     log_info("Grains: %zu, R in [%g, %g] m, mass %g kg; walls: %d; "
@@ -96,21 +77,22 @@ static int create_grains(struct solid *s)
              d->nwalls, d->dt_rayleigh, d->dt_stable, d->nl.skin);
     TRY(dem_check_initial_overlap(d, &s->sol, path));
     int found;
-    snprintf(rel, sizeof rel, "%s/demContacts", s->rt.name);
-    TRY(dem_read_contacts(app_path(&s->app, rel, path, sizeof path), d,
+    snprintf(rel, sizeof rel, "%s/demContacts", s->sv.rt.name);
+    TRY(dem_read_contacts(app_path(&s->sv.app, rel, path, sizeof path), d,
                           &found));
     if (found)
         log_info("Contact histories read from %s", rel);
-    if (s->coupled) {
-        TRY(app_read_dict(&s->app, "constant/transportProperties",
+    if (s->sv.coupled) {
+        TRY(app_read_dict(&s->sv.app, "constant/transportProperties",
                           &s->transport));
-        TRY(couple_dem_init(&s->cd, s->coupling, s->transport, d->gravity));
+        TRY(couple_dem_init(&s->cd, s->sv.coupling, s->transport, d->gravity));
     }
     return s->sol.integrator->create(d, &s->sol.params, &s->integ);
 }
 
-static void refresh_scene(struct solid *s)
+static int refresh_scene(struct solver *sv)
 {
+    struct solid *s = (struct solid *)sv;
     struct dem *d = &s->d;
     struct vtu_field f[5] = {
         {"radius", VTU_FLOAT64, 1, d->r},
@@ -124,26 +106,17 @@ static void refresh_scene(struct solid *s)
                                   .fields = s->fields, .time = d->t};
     for (int p = 0; p < d->npatches; p++)
         s->patch_ptrs[p] = d->patch_names[p];
-    s->scene = (struct fo_scene){
-        .time = s->rt.value, .dt = s->rt.dt, .step = s->rt.step,
+    s->sv.scene = (struct fo_scene){
+        .time = s->sv.rt.value, .dt = s->sv.rt.dt, .step = s->sv.rt.step,
         .dim = s->dim, .cloud_name = "dem", .cloud = &s->cloud,
         .spacing = 2 * d->rmax, .patch_names = s->patch_ptrs,
         .npatches = d->npatches, .solver = d};
-    if (s->coupled) {
+    if (s->sv.coupled) {
         couple_dem_values(&s->cd, d, s->values);
-        s->scene.values = s->values;
-        s->scene.nvalues = COUPLE_DEM_NVALUES;
+        s->sv.scene.values = s->values;
+        s->sv.scene.nvalues = COUPLE_DEM_NVALUES;
     }
-}
-
-static int create_functions(struct solid *s)
-{
-    static const struct fo_ops *const *const tables[] = {
-        fo_generic_table, dem_fo_table, couple_fo_table, NULL};
-    refresh_scene(s);
-    return fo_list_create(s->rt.functions, tables, &s->scene,
-                          s->app.case_abs, s->rt.start_time, s->rt.precision,
-                          &s->fos);
+    return SIM_OK;
 }
 
 /* dem.vtu of a coupled run: the grains' fields and the coupling state of
@@ -154,8 +127,8 @@ static int write_coupled_grains(struct solid *s, const char *path)
     if (!couple_dem_output(&s->cd, d)) {
         log_warn("t = %s: grains were removed after the last exchange; "
                  "dem.vtu is written without the coupling fields",
-                 s->rt.name);
-        return dem_write_grains(path, d, s->rt.binary);
+                 s->sv.rt.name);
+        return dem_write_grains(path, d, s->sv.rt.binary);
     }
     int a = s->cd.cs.model == COUPLING_MODEL_A;
     struct vtu_field f[10] = {
@@ -174,21 +147,20 @@ static int write_coupled_grains(struct solid *s, const char *path)
              a ? "pressureGradientForce" : "buoyancy");
     struct vtu_cloud c = {.n = d->n, .points = d->x, .nfields = 10,
                           .fields = f, .time = d->t};
-    return vtu_write(path, &c, s->rt.binary);
+    return vtu_write(path, &c, s->sv.rt.binary);
 }
 
-/* The grains and their contacts into <t>/ (prefix "") and the .pvd, or
- * into failed.<t>/ (prefix "failed.": not a time to restart from, not in
- * the .pvd). A failed write removes what it wrote, so that no half time
+/* The grains and their contacts into dir (a time directory or
+ * failed.<t>/). A failed write removes what it wrote, so that no half time
  * directory is left for latestTime. */
-static int write_fields(struct solid *s, const char *prefix)
+static int write_fields(struct solver *sv, const char *dir)
 {
-    char dir[4200], path[4400], pvd[4200], rel[256];
-    TRY(time_make_dir(&s->rt, s->app.case_abs, prefix, dir, sizeof dir));
+    struct solid *s = (struct solid *)sv;
+    char path[4400];
     snprintf(path, sizeof path, "%s/dem.vtu", dir);
-    int rc = s->coupled && s->cd.exchanges > 0
+    int rc = sv->coupled && s->cd.exchanges > 0
            ? write_coupled_grains(s, path)
-           : dem_write_grains(path, &s->d, s->rt.binary);
+           : dem_write_grains(path, &s->d, sv->rt.binary);
     if (rc == SIM_OK) {
         snprintf(path, sizeof path, "%s/demContacts", dir);
         if ((rc = dem_write_contacts(path, &s->d)) != SIM_OK) {
@@ -196,26 +168,7 @@ static int write_fields(struct solid *s, const char *prefix)
             unlink(path);
         }
     }
-    if (rc) {
-        time_dir_discard(dir);
-        return rc;
-    }
-    if (prefix[0])
-        return SIM_OK;
-    snprintf(rel, sizeof rel, "%s/dem.vtu", s->rt.name);
-    return pvd_add(app_path(&s->app, "dem.pvd", pvd, sizeof pvd), s->rt.value,
-                   rel);
-}
-
-static int start_output(struct solid *s)
-{
-    char pvd[4200], rel[256];
-    app_path(&s->app, "dem.pvd", pvd, sizeof pvd);
-    if (access(pvd, F_OK) == 0)
-        TRY(pvd_truncate(pvd, s->rt.value));
-    snprintf(rel, sizeof rel, "%s/dem.vtu", s->rt.name);
-    TRY(pvd_add(pvd, s->rt.value, rel));
-    return app_write_used_parameters(&s->app);
+    return rc;
 }
 
 /* The time the DEM is advanced to. Between writes it is k deltaT with k
@@ -225,7 +178,7 @@ static int start_output(struct solid *s)
  * the ulp. At writes it is the write time itself, which a restart reads. */
 static double target_time(const struct solid *s)
 {
-    const struct run_time *rt = &s->rt;
+    const struct run_time *rt = &s->sv.rt;
     if (rt->write_now || rt->adjust || rt->dt != rt->delta_t)
         return rt->value;
     double k0 = floor(rt->start_time / rt->delta_t + 0.5);
@@ -233,48 +186,50 @@ static double target_time(const struct solid *s)
     return fabs(tk - rt->value) < 1e-9 * rt->delta_t ? tk : rt->value;
 }
 
-static int step(struct solid *s)
+static int advance(struct solver *sv)
 {
-    struct dem *d = &s->d;
-    time_set_step(&s->rt, s->rt.delta_t);
-    if (s->coupled)
-        TRY(couple_dem_recv(&s->cd, d));       /* fluid state at d->t */
-    time_increment(&s->rt);
-    TRY(s->sol.integrator->advance(s->integ, d, target_time(s)));
-    if (s->coupled) {
-        TRY(couple_dem_after(&s->cd, d));
-        if (!s->cd.concurrent || time_running(&s->rt))   /* couple_dem.h */
-            TRY(couple_dem_send(&s->cd, d, s->rt.step, d->t));
-    }
+    struct solid *s = (struct solid *)sv;
+    return s->sol.integrator->advance(s->integ, &s->d, target_time(s));
+}
+
+static int check_domain(struct solver *sv)
+{
+    struct dem *d = &((struct solid *)sv)->d;
     long outside = dem_check_domain(d);
     if (outside < 0)
         return SIM_ERR_NOMEM;
     if (outside > 0)
-        log_warn("t = %s: %ld grains outside the domain%s", s->rt.name,
+        log_warn("t = %s: %ld grains outside the domain%s", sv->rt.name,
                  outside, d->remove_outside ? " (removed)" : "");
-    refresh_scene(s);
-    TRY(fo_list_execute(s->fos, &s->scene, s->rt.write_now));
-    if (s->rt.write_now) {
-        if (s->sol.integrator->checkpoint)
-            TRY(s->sol.integrator->checkpoint(s->integ, d));
-        TRY(dem_rebuild_neighbours(d));
-        TRY(write_fields(s, ""));
-        app_log_times(&s->app);
-    }
-    char extra[256];
-    snprintf(extra, sizeof extra, "substeps %ld rejected %ld forceEvals %ld "
-             "contacts %ld+%ld", d->stats.steps, d->stats.rejected,
-             d->stats.fevals + d->stats.hist_evals, d->ncontacts,
-             d->nwall_contacts);
-    time_log_progress(&s->rt, extra);
     return SIM_OK;
 }
 
-static void final_stats(const struct solid *s)
+/* A restart starts the integrator and the neighbour list afresh from the
+ * state written: the continuing run does the same, so that the two agree
+ * to round-off. */
+static int prepare_write(struct solver *sv)
 {
+    struct solid *s = (struct solid *)sv;
+    if (s->sol.integrator->checkpoint)
+        TRY(s->sol.integrator->checkpoint(s->integ, &s->d));
+    return dem_rebuild_neighbours(&s->d);
+}
+
+static void progress(struct solver *sv, char *buf, size_t n)
+{
+    const struct dem *d = &((struct solid *)sv)->d;
+    snprintf(buf, n, "substeps %ld rejected %ld forceEvals %ld "
+             "contacts %ld+%ld", d->stats.steps, d->stats.rejected,
+             d->stats.fevals + d->stats.hist_evals, d->ncontacts,
+             d->nwall_contacts);
+}
+
+static void final_stats(struct solver *sv)
+{
+    const struct solid *s = (const struct solid *)sv;
     const struct dem_stats *st = &s->d.stats;
-    double cpu = app_cpu_time() - s->app.cpu0;
-    double wall = app_wall_time() - s->app.wall0;
+    double cpu = app_cpu_time() - s->sv.app.cpu0;
+    double wall = app_wall_time() - s->sv.app.wall0;
     double ps = (double)s->d.n * (double)st->steps;
     log_info("\nDEM statistics (%s)", s->sol.integrator->name);
     log_info("    steps taken          %ld", st->steps);
@@ -290,86 +245,108 @@ static void final_stats(const struct solid *s)
              wall > 0 ? ps / wall : 0.0, cpu > 0 ? ps / cpu : 0.0);
 }
 
-/* A coupled run stopped by the peer, a signal or a time-out: the grains
- * are at a complete coupling time (the wait comes before or after an
- * advance, never inside one), so write them, then tell the peer why we
- * leave. A failure of the DEM itself leaves no consistent state to write. */
-static void coupled_failure(struct solid *s, int rc)
+static void cleanup(struct solver *sv)
 {
-    char msg[1024];
-    /* A signal stops both programs, which both write: a restart time.
-     * Otherwise the peer writes nothing: failed.<t>/ (mpsFluid.c). */
-    const char *prefix = rc == SIM_ERR_INTERRUPT ? "" : "failed.";
-    snprintf(msg, sizeof msg, "%s", sim_error_message());
-    if ((rc == SIM_ERR_PEER || rc == SIM_ERR_INTERRUPT
-         || rc == SIM_ERR_TIMEOUT) && s->rt.step > 0
-        && write_fields(s, prefix) == SIM_OK)
-        log_info("Last complete state (t = %g s) written to %s%s/dem.vtu",
-                 s->d.t, prefix, s->rt.name);
-    couple_dem_close(&s->cd, rc);
-    sim_error(rc, "%s", msg);
-}
-
-static void cleanup(struct solid *s)
-{
+    struct solid *s = (struct solid *)sv;
     couple_dem_free(&s->cd);
-    dict_free(s->coupling);
     dict_free(s->transport);
     if (s->integ)
         s->sol.integrator->destroy(s->integ);
-    fo_list_free(s->fos);
     dem_free(&s->d);
-    dict_free(s->control);
     dict_free(s->props);
     dict_free(s->solution);
     dict_free(s->particles);
     dict_free(s->gravity);
 }
 
+static int create(struct solver *sv)
+{
+    struct solid *s = (struct solid *)sv;
+    dem_init(&s->d);
+    TRY(create_grains(s));
+    TRY(solver_check_unused(sv, s->props));
+    return solver_check_unused(sv, s->solution);
+}
+
+static void list_models(void)
+{
+    model_choices_print(dem_choices, NULL, NULL);
+    model_choices_print(coupling_choices, NULL, NULL);
+}
+
+/* Coupled (doc/design.md §4): the initial state goes to mpsFluid; each
+ * interval receives the fluid state, advances, and sends the new state. */
+static int couple_open(struct solver *sv)
+{
+    struct solid *s = (struct solid *)sv;
+    TRY(couple_dem_open(&s->cd, sv->coupling, sv->app.case_abs, "demSolid",
+                        s->dim, sv->rt.end_time));
+    return couple_dem_send(&s->cd, &s->d, sv->rt.step, s->d.t);
+}
+
+static int couple_before(struct solver *sv)
+{
+    struct solid *s = (struct solid *)sv;
+    return couple_dem_recv(&s->cd, &s->d);     /* fluid state at d->t */
+}
+
+static int couple_after(struct solver *sv)
+{
+    struct solid *s = (struct solid *)sv;
+    TRY(couple_dem_after(&s->cd, &s->d));
+    if (!s->cd.concurrent || time_running(&sv->rt))     /* couple_dem.h */
+        TRY(couple_dem_send(&s->cd, &s->d, sv->rt.step, s->d.t));
+    return SIM_OK;
+}
+
+/* The peer stopped, a signal came or a time-out: the grains are at a
+ * complete coupling time (the wait comes before or after an advance,
+ * never inside one). A failure of the DEM itself leaves no consistent
+ * state to write. */
+static int couple_keeps_state(int rc)
+{
+    return rc == SIM_ERR_PEER || rc == SIM_ERR_INTERRUPT
+        || rc == SIM_ERR_TIMEOUT;
+}
+
+static void couple_close(struct solver *sv, int rc)
+{
+    couple_dem_close(&((struct solid *)sv)->cd, rc);
+}
+
+static const struct solver_coupling coupling = {
+    .open = couple_open,
+    .before_step = couple_before,
+    .after_step = couple_after,
+    .keeps_state = couple_keeps_state,
+    .close = couple_close,
+};
+
+static const struct fo_ops *const *const fo_tables[] = {
+    fo_generic_table, dem_fo_table, couple_fo_table, NULL };
+
+static const struct solver_ops solid_ops = {
+    .name = "demSolid",
+    .description = "DEM solver: spheres, contact sub-models, ARKode or "
+                   "Verlet sub-stepping",
+    .cloud = "dem",
+    .peer_cloud = "fluid",
+    .list_models = list_models,
+    .create = create,
+    .fo_tables = fo_tables,
+    .refresh_scene = refresh_scene,
+    .advance = advance,
+    .check = check_domain,
+    .prepare_write = prepare_write,
+    .write = write_fields,
+    .progress = progress,
+    .stats = final_stats,
+    .cleanup = cleanup,
+    .coupling = &coupling,
+};
+
 int main(int argc, char **argv)
 {
     static struct solid s;
-    int rc;
-
-    const char *list = NULL;
-    const struct app_option opts[] = {
-        { "-listModels", 0, NULL, "print every model choice (dictionary "
-          "key name) and exit", &list },
-        { NULL, 0, NULL, NULL, NULL }
-    };
-    app_init(&s.app, "demSolid", "DEM solver: spheres, contact sub-models, "
-             "ARKode or Verlet sub-stepping", argc, argv, opts, 0);
-    if (list) {
-        model_choices_print(dem_choices, NULL, NULL);
-        model_choices_print(coupling_choices, NULL, NULL);
-        return 0;
-    }
-    dem_init(&s.d);
-    if ((rc = app_lock_case(&s.app)) || (rc = create_time(&s))
-        || (rc = create_grains(&s))
-        || (rc = create_functions(&s)) || (rc = start_output(&s)))
-        app_fatal(&s.app, rc);
-    dict_mark_used(s.control, "application");  /* read by scripts */
-    dict_warn_unused(s.control);
-    dict_warn_unused(s.props);
-    dict_warn_unused(s.solution);
-    if (s.coupled) {
-        if ((rc = couple_dem_open(&s.cd, s.coupling, s.app.case_abs,
-                                  "demSolid", s.dim, s.rt.end_time))
-            || (rc = couple_dem_send(&s.cd, &s.d, s.rt.step, s.d.t)))
-            coupled_failure(&s, rc), app_fatal(&s.app, rc);
-        dict_warn_unused(s.coupling);
-    }
-    log_info("\nStarting time loop\n");
-    while (time_running(&s.rt))
-        if ((rc = step(&s))) {
-            if (s.coupled)
-                coupled_failure(&s, rc);
-            app_fatal(&s.app, rc);
-        }
-    if (s.coupled)
-        couple_dem_close(&s.cd, SIM_OK);
-    final_stats(&s);
-    cleanup(&s);
-    return app_end(&s.app);
+    return solver_main(&solid_ops, &s.sv, argc, argv);
 }

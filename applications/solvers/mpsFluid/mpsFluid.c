@@ -25,15 +25,11 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <sys/stat.h>
-#include <unistd.h>
 
-#include "core/app.h"
 #include "core/dict.h"
 #include "core/error.h"
 #include "core/gravity.h"
 #include "core/log.h"
-#include "core/time.h"
 #include "couplingMps/couple_fluid.h"
 #include "couplingMps/couple_output.h"
 #include "coupling/models.h"
@@ -41,15 +37,15 @@
 #include "io/vtu.h"
 #include "functionObjects/mps_functionObjects.h"
 #include "mps/mps.h"
+#include "solver/solver.h"
 
 #define MAX_PATCHES 64
 
 struct fluid {
-    struct app app;
-    struct dict *control, *transport, *gravity, *schemes, *solution, *patches;
+    struct solver sv;               /* first: the hooks cast back        */
+    struct dict *transport, *gravity, *schemes, *solution, *patches;
     struct dict *particles;         /* system/particleDict, or NULL      */
     struct wall_motion motion[MAX_PATCHES];
-    struct run_time rt;
     struct mps_solver s;
     int dim;
     double dp;
@@ -58,37 +54,18 @@ struct fluid {
     char value_names[MAX_PATCHES + 2][80];
     struct fo_value values[MAX_PATCHES + 2];
     double force[3 * MAX_PATCHES];
-    struct fo_list *fos;
-    struct fo_scene scene;
     struct vtu_cloud cloud;
     struct vtu_field fields[11];
-    struct dict *coupling;          /* coupled runs only                 */
-    int coupled;
-    struct couple_fluid cf;
+    struct couple_fluid cf;         /* coupled runs only                 */
     struct couple_output out;
 };
-
-/* controlDict, and system/couplingDict if there is one: a coupled run
- * restarts (startFrom latestTime) only from a time that holds both
- * clouds. */
-static int create_time(struct fluid *f)
-{
-    TRY(app_read_dict(&f->app, "system/controlDict", &f->control));
-    TRY(app_read_dict_optional(&f->app, "system/couplingDict",
-                               &f->coupling));
-    TRY(couple_enabled(f->coupling, &f->coupled));
-    static const char *const alone[] = { "fluid.vtu", NULL };
-    static const char *const both[] = { "fluid.vtu", "dem.vtu", NULL };
-    return time_read(f->control, f->app.case_abs, f->coupled ? both : alone,
-                     &f->rt);
-}
 
 /* constant/particlePatches: patch names, dimension and dp of the lattice. */
 static int read_patches(struct fluid *f)
 {
     const struct dict_value *list;
     long dim;
-    TRY(app_read_dict(&f->app, "constant/particlePatches", &f->patches));
+    TRY(app_read_dict(&f->sv.app, "constant/particlePatches", &f->patches));
     TRY(dict_get_list(f->patches, "patches", &list));
     f->npatches = dict_value_len(list);
     if (f->npatches > MAX_PATCHES)
@@ -141,7 +118,7 @@ static int read_motions(struct fluid *f, struct mps_settings *S)
 {
     for (int k = 0; k < MAX_PATCHES; k++)
         wall_motion_init(&f->motion[k]);
-    TRY(app_read_dict_optional(&f->app, "system/particleDict",
+    TRY(app_read_dict_optional(&f->sv.app, "system/particleDict",
                                &f->particles));
     if (!f->particles)
         return SIM_OK;
@@ -153,7 +130,7 @@ static int read_motions(struct fluid *f, struct mps_settings *S)
         const char *type;
         TRY(dict_get_string(r, "type", &type));
         int is_wall = !strcmp(type, "wall") || !strcmp(type, "tankWall");
-        TRY(wall_motion_read(r, is_wall, f->dim, f->app.case_abs,
+        TRY(wall_motion_read(r, is_wall, f->dim, f->sv.app.case_abs,
                              &f->motion[k]));
         struct wall_motion *m = &f->motion[k];
         if (wall_motion_moves(m))
@@ -242,14 +219,14 @@ static int copy_cloud(struct fluid *f, const struct vtu_cloud *c,
 /* system/couplingDict: nothing of the grains exists without it. */
 static int create_coupling(struct fluid *f)
 {
-    if (!f->coupled)
+    if (!f->sv.coupled)
         return SIM_OK;
-    if (f->rt.adjust)
-        return dict_error(f->control, "adjustTimeStep", SIM_ERR_DICT,
+    if (f->sv.rt.adjust)
+        return dict_error(f->sv.control, "adjustTimeStep", SIM_ERR_DICT,
                           "a coupled run needs a fixed deltaT, the same as "
                           "demSolid's (the coupling interval): set "
                           "adjustTimeStep no");
-    return couple_fluid_init(&f->cf, f->coupling, &f->s);
+    return couple_fluid_init(&f->cf, f->sv.coupling, &f->s);
 }
 
 static int create_fluid(struct fluid *f)
@@ -264,10 +241,11 @@ static int create_fluid(struct fluid *f)
     int rc;
 
     TRY(read_patches(f));
-    TRY(app_read_dict(&f->app, "constant/transportProperties", &f->transport));
-    TRY(gravity_case(&f->app, f->dim, g, &f->gravity));
-    TRY(app_read_dict(&f->app, "system/mpsSchemes", &f->schemes));
-    TRY(app_read_dict(&f->app, "system/mpsSolution", &f->solution));
+    TRY(app_read_dict(&f->sv.app, "constant/transportProperties",
+                      &f->transport));
+    TRY(gravity_case(&f->sv.app, f->dim, g, &f->gravity));
+    TRY(app_read_dict(&f->sv.app, "system/mpsSchemes", &f->schemes));
+    TRY(app_read_dict(&f->sv.app, "system/mpsSolution", &f->solution));
     TRY(mps_settings_read(f->transport, NULL, f->schemes, f->solution, &S));
     memcpy(S.g, g, sizeof S.g);
     TRY(read_motions(f, &S));
@@ -277,8 +255,8 @@ static int create_fluid(struct fluid *f)
                           "in the x-y plane, e.g. (0 -9.81 0)");
     TRY(dict_get_dict(f->solution, "PPE", &ppe));
     TRY(linsolve_create(ppe, &ls));
-    snprintf(rel, sizeof rel, "%s/fluid.vtu", f->rt.name);
-    app_path(&f->app, rel, path, sizeof path);
+    snprintf(rel, sizeof rel, "%s/fluid.vtu", f->sv.rt.name);
+    app_path(&f->sv.app, rel, path, sizeof path);
     rc = vtu_read(path, &c);
     if (!rc)
         rc = vtu_check_finite(&c, path);
@@ -294,19 +272,20 @@ static int create_fluid(struct fluid *f)
     log_info("Fluid cloud %s: %d particles, %d-D, dp = %g m", rel, P.n,
              f->dim, f->dp);
     TRY(mps_solver_init(&f->s, &P, &S, f->dp, ls));
-    f->s.time = f->rt.value;
+    f->s.time = f->sv.rt.value;
     TRY(create_coupling(f));
-    if (f->s.P.phi && !f->coupled)
+    if (f->s.P.phi && !f->sv.coupled)
         return sim_error(SIM_ERR_INPUT, "%s: field 'volumeFraction' (fluid "
                          "displaced by grains: genParticles grainVolume "
                          "scale) needs a coupled run (system/couplingDict: "
                          "coupled yes)", path);
-    return mps_check_setup(&f->s, f->rt.delta_t, f->rt.adjust,
-                           f->rt.adjust ? f->rt.max_co : 0.2);
+    return mps_check_setup(&f->s, f->sv.rt.delta_t, f->sv.rt.adjust,
+                           f->sv.rt.adjust ? f->sv.rt.max_co : 0.2);
 }
 
-static int refresh_scene(struct fluid *f)
+static int refresh_scene(struct solver *sv)
 {
+    struct fluid *f = (struct fluid *)sv;
     struct mps_particles *P = &f->s.P;
     struct vtu_field fl[8] = {
         { "type", VTU_INT32, 1, P->type },
@@ -320,7 +299,7 @@ static int refresh_scene(struct fluid *f)
     };
     memcpy(f->fields, fl, sizeof fl);
     int nf = 8;
-    if (f->coupled) {
+    if (f->sv.coupled) {
         /* inv_eps holds phi_i/eps_i with volume fractions */
         for (int i = 0; i < P->n; i++)
             f->cf.eps[i] = (P->phi ? P->phi[i] : 1.0) / P->inv_eps[i];
@@ -336,7 +315,7 @@ static int refresh_scene(struct fluid *f)
     }
     f->cloud = (struct vtu_cloud){ .n = (size_t)P->n, .points = P->x,
                                    .nfields = nf, .fields = f->fields,
-                                   .time = f->rt.value };
+                                   .time = f->sv.rt.value };
     mps_wall_forces(&f->s, f->npatches, f->force);
     int nv = 0;
     for (int k = 0; k < f->npatches; k++, nv++) {
@@ -350,8 +329,8 @@ static int refresh_scene(struct fluid *f)
                                          .v = { (double)f->s.n_escaped } };
     f->values[nv++] = (struct fo_value){ .name = "n0", .ncomp = 1,
                                          .v = { f->s.Ln.n0 } };
-    f->scene = (struct fo_scene){
-        .time = f->rt.value, .dt = f->rt.dt, .step = f->rt.step,
+    f->sv.scene = (struct fo_scene){
+        .time = f->sv.rt.value, .dt = f->sv.rt.dt, .step = f->sv.rt.step,
         .dim = f->dim, .cloud_name = "fluid", .cloud = &f->cloud,
         .spacing = f->dp, .patch_names = f->patch_names,
         .npatches = f->npatches, .values = f->values, .nvalues = nv,
@@ -359,113 +338,61 @@ static int refresh_scene(struct fluid *f)
     return SIM_OK;
 }
 
-static int create_functions(struct fluid *f)
+static int create(struct solver *sv)
 {
-    static const struct fo_ops *const *const tables[] = {
-        fo_generic_table, mps_fo_table, NULL };
-    TRY(refresh_scene(f));
-    return fo_list_create(f->rt.functions, tables, &f->scene,
-                          f->app.case_abs, f->rt.start_time, f->rt.precision,
-                          &f->fos);
+    struct fluid *f = (struct fluid *)sv;
+    TRY(create_fluid(f));
+    TRY(solver_check_unused(sv, f->schemes));
+    TRY(solver_check_unused(sv, f->solution));
+    return solver_check_unused(sv, f->transport);
 }
 
-/* The fields into <t>/ (prefix "") and the .pvd, or into failed.<t>/
- * (prefix "failed.": a state to inspect, not to restart from, so not in
- * the .pvd). A failed write removes the directory it created. */
-static int write_fields(struct fluid *f, const char *prefix)
+/* fluid.vtu into dir: the time directory or failed.<t>/. */
+static int write_fields(struct solver *sv, const char *dir)
 {
-    char dir[4200], path[4400], pvd[4200], rel[256];
-    TRY(refresh_scene(f));
-    TRY(time_make_dir(&f->rt, f->app.case_abs, prefix, dir, sizeof dir));
+    struct fluid *f = (struct fluid *)sv;
+    char path[4400];
+    TRY(refresh_scene(sv));
     snprintf(path, sizeof path, "%s/fluid.vtu", dir);
-    int rc = vtu_write(path, &f->cloud, f->rt.binary);
-    if (rc) {
-        time_dir_discard(dir);
-        return rc;
-    }
-    if (prefix[0])
-        return SIM_OK;
-    snprintf(rel, sizeof rel, "%s/fluid.vtu", f->rt.name);
-    return pvd_add(app_path(&f->app, "fluid.pvd", pvd, sizeof pvd),
-                   f->rt.value, rel);
+    return vtu_write(path, &f->cloud, sv->rt.binary);
 }
 
-static int start_output(struct fluid *f)
+static double propose_dt(struct solver *sv)
 {
-    char pvd[4200], rel[256];
-    app_path(&f->app, "fluid.pvd", pvd, sizeof pvd);
-    if (access(pvd, F_OK) == 0)
-        TRY(pvd_truncate(pvd, f->rt.value));
-    snprintf(rel, sizeof rel, "%s/fluid.vtu", f->rt.name);
-    TRY(pvd_add(pvd, f->rt.value, rel));
-    return app_write_used_parameters(&f->app);
+    struct fluid *f = (struct fluid *)sv;
+    return sv->rt.adjust ? mps_propose_dt(&f->s, sv->rt.max_co)
+                         : sv->rt.delta_t;
 }
 
-/* A failed step (PPE not converged, NaN, too many escapes): keep the state
- * reached for inspection, then let main stop. */
-static int failed(struct fluid *f, int rc)
+static int advance(struct solver *sv)
 {
-    char msg[1024];
-    snprintf(msg, sizeof msg, "%s", sim_error_message());
-    if (write_fields(f, "failed.") == SIM_OK)
-        log_info("State at the failure written to failed.%s/fluid.vtu (to "
-                 "inspect; not a time to restart from)", f->rt.name);
-    return sim_error(rc, "%s", msg);
+    struct fluid *f = (struct fluid *)sv;
+    return mps_step(&f->s, sv->rt.dt);
 }
 
-/* The peer failed, a signal came, or the intervals disagree: the fluid
- * is at a complete time (the exchange precedes the step), so write it and
- * tell the peer why we leave. A signal stops both programs, which both
- * write: a time to restart from. Otherwise the peer writes nothing, and
- * our state alone goes to failed.<t>/. */
-static int coupled_failure(struct fluid *f, int rc)
+/* A restart from the state written builds its neighbour list (and
+ * numbering) afresh: so does the continuing run, so that the two agree to
+ * round-off. */
+static int prepare_write(struct solver *sv)
 {
-    char msg[1024];
-    const char *prefix = rc == SIM_ERR_INTERRUPT ? "" : "failed.";
-    snprintf(msg, sizeof msg, "%s", sim_error_message());
-    if (f->rt.step > 0 && write_fields(f, prefix) == SIM_OK)
-        log_info("Last complete state (t = %s s) written to %s%s/fluid.vtu",
-                 f->rt.name, prefix, f->rt.name);
-    couple_fluid_close(&f->cf, rc);
-    return sim_error(rc, "%s", msg);
-}
-
-static int step(struct fluid *f)
-{
-    struct mps_solver *s = &f->s;
-    double dt = f->rt.adjust ? mps_propose_dt(s, f->rt.max_co) : f->rt.delta_t;
-    time_set_step(&f->rt, dt);
-    int rc = SIM_OK;
-    if (f->coupled
-        && (rc = couple_fluid_exchange(&f->cf, s, f->rt.step, f->rt.value,
-                                       f->rt.dt)))
-        return coupled_failure(f, rc);
-    if (f->coupled && (rc = couple_output_snapshot(&f->out, &f->cf, &s->P)))
-        return rc;
-    rc = mps_step(s, f->rt.dt);
-    time_increment(&f->rt);
-    if (rc)
-        return failed(f, rc);
-    TRY(refresh_scene(f));
-    TRY(fo_list_execute(f->fos, &f->scene, f->rt.write_now));
-    if (f->rt.write_now) {
-        TRY(write_fields(f, ""));
-        mps_request_rebuild(s);
-        app_log_times(&f->app);
-    }
-    char extra[256];
-    snprintf(extra, sizeof extra, "PPE: %d iterations, residual %.3g  "
-             "particles %d  escaped %ld", s->last.iters, s->last.res_rel,
-             s->P.n, s->n_escaped);
-    time_log_progress(&f->rt, extra);
+    mps_request_rebuild(&((struct fluid *)sv)->s);
     return SIM_OK;
 }
 
-static void final_stats(const struct fluid *f)
+static void progress(struct solver *sv, char *buf, size_t n)
 {
+    const struct mps_solver *s = &((struct fluid *)sv)->s;
+    snprintf(buf, n, "PPE: %d iterations, residual %.3g  particles %d  "
+             "escaped %ld", s->last.iters, s->last.res_rel, s->P.n,
+             s->n_escaped);
+}
+
+static void final_stats(struct solver *sv)
+{
+    const struct fluid *f = (const struct fluid *)sv;
     const struct mps_timers *t = &f->s.t;
     double ps = (double)f->s.P.n * (double)(t->steps ? t->steps : 1);
-    double wall = app_wall_time() - f->app.wall0;
+    double wall = app_wall_time() - f->sv.app.wall0;
     double sum = t->neighbours + t->explicit_ + t->assembly + t->ppe
                + t->correction;
     log_info("\nMPS statistics");
@@ -491,14 +418,12 @@ static void final_stats(const struct fluid *f)
              wall > 0 ? ps / wall : 0.0, wall);
 }
 
-static void cleanup(struct fluid *f)
+static void cleanup(struct solver *sv)
 {
+    struct fluid *f = (struct fluid *)sv;
     couple_fluid_free(&f->cf);
     couple_output_free(&f->out);
-    dict_free(f->coupling);
-    fo_list_free(f->fos);
     mps_solver_free(&f->s);
-    dict_free(f->control);
     dict_free(f->transport);
     dict_free(f->gravity);
     dict_free(f->schemes);
@@ -509,54 +434,76 @@ static void cleanup(struct fluid *f)
         wall_motion_free(&f->motion[k]);
 }
 
+static void list_models(void)
+{
+    model_choices_print(mps_choices, NULL, NULL);
+    model_choices_print(linsolve_choices, "system/mpsSolution", "PPE/");
+    model_choices_print(coupling_choices, NULL, NULL);
+}
+
+/* Coupled (doc/design.md §4): before each step the fluid state at the
+ * grains goes to demSolid and the grains' state at the end of the step
+ * comes back; the step then sees them through inv_eps and f_ext. */
+static int couple_open(struct solver *sv)
+{
+    struct fluid *f = (struct fluid *)sv;
+    return couple_fluid_open(&f->cf, sv->coupling, sv->app.case_abs,
+                             "mpsFluid", sv->rt.end_time);
+}
+
+static int couple_before(struct solver *sv)
+{
+    struct fluid *f = (struct fluid *)sv;
+    TRY(couple_fluid_exchange(&f->cf, &f->s, sv->rt.step, sv->rt.value,
+                              sv->rt.dt));
+    return couple_output_snapshot(&f->out, &f->cf, &f->s.P);
+}
+
+static void couple_finish(struct solver *sv)
+{
+    const struct fluid *f = (const struct fluid *)sv;
+    log_info("Coupling: %ld exchanges, %.3g s in the glue, %.3g s "
+             "waiting for demSolid", f->cf.exchanges, f->cf.wall,
+             f->cf.wait);
+}
+
+static void couple_close(struct solver *sv, int rc)
+{
+    couple_fluid_close(&((struct fluid *)sv)->cf, rc);
+}
+
+static const struct solver_coupling coupling = {
+    .open = couple_open,
+    .before_step = couple_before,
+    .finish = couple_finish,
+    .close = couple_close,
+};
+
+static const struct fo_ops *const *const fo_tables[] = {
+    fo_generic_table, mps_fo_table, NULL };
+
+static const struct solver_ops fluid_ops = {
+    .name = "mpsFluid",
+    .description = "incompressible MPS solver for free-surface flows",
+    .cloud = "fluid",
+    .peer_cloud = "dem",
+    .list_models = list_models,
+    .create = create,
+    .fo_tables = fo_tables,
+    .refresh_scene = refresh_scene,
+    .propose_dt = propose_dt,
+    .advance = advance,
+    .dump_failed_advance = 1,
+    .prepare_write = prepare_write,
+    .write = write_fields,
+    .progress = progress,
+    .stats = final_stats,
+    .cleanup = cleanup,
+    .coupling = &coupling,
+};
+
 int main(int argc, char **argv)
 {
     static struct fluid f;
-    int rc;
-    const char *list = NULL;
-    const struct app_option opts[] = {
-        { "-listModels", 0, NULL, "print every model choice (dictionary "
-          "key name) and exit", &list },
-        { NULL, 0, NULL, NULL, NULL }
-    };
-
-    app_init(&f.app, "mpsFluid", "incompressible MPS solver for free-surface "
-             "flows", argc, argv, opts, 0);
-    if (list) {
-        model_choices_print(mps_choices, NULL, NULL);
-        model_choices_print(linsolve_choices, "system/mpsSolution", "PPE/");
-        model_choices_print(coupling_choices, NULL, NULL);
-        return 0;
-    }
-    if ((rc = app_lock_case(&f.app)) || (rc = create_time(&f))
-        || (rc = create_fluid(&f))
-        || (rc = create_functions(&f)) || (rc = start_output(&f)))
-        app_fatal(&f.app, rc);
-    dict_mark_used(f.control, "application");
-    dict_warn_unused(f.control);
-    dict_warn_unused(f.schemes);
-    dict_warn_unused(f.solution);
-    dict_warn_unused(f.transport);
-    if (f.coupled) {
-        if ((rc = couple_fluid_open(&f.cf, f.coupling, f.app.case_abs,
-                                    "mpsFluid", f.rt.end_time)))
-            app_fatal(&f.app, rc);
-        dict_warn_unused(f.coupling);
-    }
-    log_info("\nStarting time loop\n");
-    while (time_running(&f.rt))
-        if ((rc = step(&f))) {
-            if (f.coupled)
-                couple_fluid_close(&f.cf, rc);
-            app_fatal(&f.app, rc);
-        }
-    if (f.coupled) {
-        log_info("Coupling: %ld exchanges, %.3g s in the glue, %.3g s "
-                 "waiting for demSolid", f.cf.exchanges, f.cf.wall,
-                 f.cf.wait);
-        couple_fluid_close(&f.cf, SIM_OK);
-    }
-    final_stats(&f);
-    cleanup(&f);
-    return app_end(&f.app);
+    return solver_main(&fluid_ops, &f.sv, argc, argv);
 }

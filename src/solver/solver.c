@@ -1,0 +1,212 @@
+/*
+ * solver.c — the run around a particle solver's algorithm (solver.h).
+ */
+#include "solver/solver.h"
+
+#include <stdio.h>
+#include <unistd.h>
+
+#include "core/dict.h"
+#include "core/error.h"
+#include "core/log.h"
+#include "coupling/models.h"
+#include "io/vtu.h"
+
+int solver_check_unused(struct solver *sv, const struct dict *d)
+{
+    if (sv->nchecked == SOLVER_MAX_CHECKED)
+        return sim_error(SIM_ERR_INTERNAL, "solver_check_unused: more than "
+                         "%d dictionaries", SOLVER_MAX_CHECKED);
+    sv->checked[sv->nchecked++] = d;
+    return SIM_OK;
+}
+
+/* controlDict, and system/couplingDict if there is one: a coupled run
+ * restarts (startFrom latestTime) only from a time that holds both
+ * clouds, because the peer restarts from the same time. */
+static int create_time(struct solver *sv)
+{
+    char own[64], peer[64];
+    TRY(app_read_dict(&sv->app, "system/controlDict", &sv->control));
+    TRY(app_read_dict_optional(&sv->app, "system/couplingDict",
+                               &sv->coupling));
+    TRY(couple_enabled(sv->coupling, &sv->coupled));
+    if (sv->coupled && !sv->ops->coupling)
+        return sim_error(SIM_ERR_INPUT, "system/couplingDict: %s cannot "
+                         "run coupled", sv->ops->name);
+    snprintf(own, sizeof own, "%s.vtu", sv->ops->cloud);
+    snprintf(peer, sizeof peer, "%s.vtu",
+             sv->ops->peer_cloud ? sv->ops->peer_cloud : "");
+    const char *const alone[] = { own, NULL };
+    const char *const both[] = { own, peer, NULL };
+    return time_read(sv->control, sv->app.case_abs,
+                     sv->coupled && sv->ops->peer_cloud ? both : alone,
+                     &sv->rt);
+}
+
+static int create_functions(struct solver *sv)
+{
+    TRY(sv->ops->refresh_scene(sv));
+    return fo_list_create(sv->rt.functions, sv->ops->fo_tables, &sv->scene,
+                          sv->app.case_abs, sv->rt.start_time,
+                          sv->rt.precision, &sv->fos);
+}
+
+static const char *pvd_path(const struct solver *sv, char *buf, size_t n)
+{
+    char rel[96];
+    snprintf(rel, sizeof rel, "%s.pvd", sv->ops->cloud);
+    return app_path(&sv->app, rel, buf, n);
+}
+
+/* A restart drops the times after the start from the .pvd (they are
+ * recomputed), then lists the start time itself. */
+static int start_output(struct solver *sv)
+{
+    char pvd[4200], rel[256];
+    pvd_path(sv, pvd, sizeof pvd);
+    if (access(pvd, F_OK) == 0)
+        TRY(pvd_truncate(pvd, sv->rt.value));
+    snprintf(rel, sizeof rel, "%s/%s.vtu", sv->rt.name, sv->ops->cloud);
+    TRY(pvd_add(pvd, sv->rt.value, rel));
+    return app_write_used_parameters(&sv->app);
+}
+
+int solver_write(struct solver *sv, const char *prefix)
+{
+    char dir[4200], pvd[4200], rel[256];
+    TRY(time_make_dir(&sv->rt, sv->app.case_abs, prefix, dir, sizeof dir));
+    int rc = sv->ops->write(sv, dir);
+    if (rc) {
+        time_dir_discard(dir);
+        return rc;
+    }
+    if (prefix[0])
+        return SIM_OK;
+    snprintf(rel, sizeof rel, "%s/%s.vtu", sv->rt.name, sv->ops->cloud);
+    return pvd_add(pvd_path(sv, pvd, sizeof pvd), sv->rt.value, rel);
+}
+
+/* A failed advance (PPE not converged, NaN, too many escapes): keep the
+ * state reached for inspection; the error stays the advance's. */
+static int failed(struct solver *sv, int rc)
+{
+    char msg[1024];
+    snprintf(msg, sizeof msg, "%s", sim_error_message());
+    if (solver_write(sv, "failed.") == SIM_OK)
+        log_info("State at the failure written to failed.%s/%s.vtu (to "
+                 "inspect; not a time to restart from)", sv->rt.name,
+                 sv->ops->cloud);
+    return sim_error(rc, "%s", msg);
+}
+
+/* The exchange with the peer failed (the peer failed, a signal came, a
+ * time-out, the intervals disagree): the wait is never inside an advance,
+ * so the state is at a complete coupling time. Write it, then tell the
+ * peer why we leave. A signal stops both programs, which both write: a
+ * time to restart from. Otherwise the peer writes nothing, and our state
+ * alone goes to failed.<t>/. */
+static int coupled_stop(struct solver *sv, int rc)
+{
+    const struct solver_coupling *c = sv->ops->coupling;
+    const char *prefix = rc == SIM_ERR_INTERRUPT ? "" : "failed.";
+    char msg[1024];
+    snprintf(msg, sizeof msg, "%s", sim_error_message());
+    if ((!c->keeps_state || c->keeps_state(rc)) && sv->rt.step > 0
+        && solver_write(sv, prefix) == SIM_OK)
+        log_info("Last complete state (t = %s s) written to %s%s/%s.vtu",
+                 sv->rt.name, prefix, sv->rt.name, sv->ops->cloud);
+    c->close(sv, rc);
+    return sim_error(rc, "%s", msg);
+}
+
+static int step(struct solver *sv)
+{
+    const struct solver_ops *o = sv->ops;
+    const struct solver_coupling *c = sv->coupled ? o->coupling : NULL;
+    int rc;
+    time_set_step(&sv->rt, o->propose_dt ? o->propose_dt(sv)
+                                         : sv->rt.delta_t);
+    if (c && (rc = c->before_step(sv)))
+        return coupled_stop(sv, rc);
+    time_increment(&sv->rt);
+    if ((rc = o->advance(sv)))
+        return o->dump_failed_advance ? failed(sv, rc) : rc;
+    if (c && c->after_step && (rc = c->after_step(sv)))
+        return coupled_stop(sv, rc);
+    if (o->check)
+        TRY(o->check(sv));
+    TRY(o->refresh_scene(sv));
+    TRY(fo_list_execute(sv->fos, &sv->scene, sv->rt.write_now));
+    if (sv->rt.write_now) {
+        if (o->prepare_write)
+            TRY(o->prepare_write(sv));
+        TRY(solver_write(sv, ""));
+        app_log_times(&sv->app);
+    }
+    char extra[256] = "";
+    if (o->progress)
+        o->progress(sv, extra, sizeof extra);
+    time_log_progress(&sv->rt, extra);
+    return SIM_OK;
+}
+
+/* Stop on an error; a coupled run tells the peer first (a second close
+ * after coupled_stop is a no-op). */
+static void stop(struct solver *sv, int rc) __attribute__((noreturn));
+static void stop(struct solver *sv, int rc)
+{
+    if (sv->coupled && sv->ops->coupling)
+        sv->ops->coupling->close(sv, rc);
+    app_fatal(&sv->app, rc);
+}
+
+int solver_main(const struct solver_ops *ops, struct solver *sv, int argc,
+                char **argv)
+{
+    const char *list = NULL;
+    const struct app_option opts[] = {
+        { "-listModels", 0, NULL, "print every model choice (dictionary "
+          "key name) and exit", &list },
+        { NULL, 0, NULL, NULL, NULL }
+    };
+    int rc;
+
+    sv->ops = ops;
+    app_init(&sv->app, ops->name, ops->description, argc, argv,
+             ops->list_models ? opts : NULL, 0);
+    if (list) {
+        ops->list_models();
+        return 0;
+    }
+    if ((rc = app_lock_case(&sv->app)) || (rc = create_time(sv))
+        || (rc = ops->create(sv)) || (rc = create_functions(sv))
+        || (rc = start_output(sv)))
+        app_fatal(&sv->app, rc);
+    dict_mark_used(sv->control, "application");  /* read by scripts */
+    dict_warn_unused(sv->control);
+    for (int k = 0; k < sv->nchecked; k++)
+        dict_warn_unused(sv->checked[k]);
+    if (sv->coupled) {
+        if ((rc = ops->coupling->open(sv)))
+            coupled_stop(sv, rc), app_fatal(&sv->app, rc);
+        dict_warn_unused(sv->coupling);
+    }
+    log_info("\nStarting time loop\n");
+    while (time_running(&sv->rt))
+        if ((rc = step(sv)))
+            stop(sv, rc);
+    if (sv->coupled) {
+        if (ops->coupling->finish)
+            ops->coupling->finish(sv);
+        ops->coupling->close(sv, SIM_OK);
+    }
+    if (ops->stats)
+        ops->stats(sv);
+    if (ops->cleanup)
+        ops->cleanup(sv);
+    fo_list_free(sv->fos);
+    dict_free(sv->coupling);
+    dict_free(sv->control);
+    return app_end(&sv->app);
+}
