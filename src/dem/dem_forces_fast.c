@@ -34,6 +34,209 @@ int dem_forces_fast_ok(const struct dem *d, int nth)
            && !d->slip_g && contact_law_is_fused(&d->law);
 }
 
+/* Pairs are evaluated in blocks of BLK consecutive list entries: a scalar
+ * pass gathers what each pair needs, a second pass evaluates the law on
+ * all of them as vectors (#pragma omp simd: sqrt, division and the
+ * arithmetic are correctly rounded lane by lane, and no floating-point
+ * contraction is on with -std=c17, so a lane computes the bits the scalar
+ * law computes; the law's branches become selects of values computed
+ * both ways), and a scalar pass adds the results in list order, finishing
+ * each grain whose row is complete. */
+#define BLK 64
+
+struct blk {
+    /* gathered */
+    double dx[3][BLK], rs[BLK], ri[BLK], rj[BLK], chi[BLK], mstar[BLK];
+    double sim[BLK], dv[3][BLK], sw[3][BLK], h[3][BLK];
+    /* evaluated */
+    double f[3][BLK], ti[3][BLK], tj[3][BLK], hn[3][BLK], w2[BLK];
+    int on[BLK];
+};
+
+/* no-math-errno: sqrt of the negative overlap of a lane out of contact
+ * (discarded) would otherwise be a call that sets errno and no vector */
+
+
+static void blk_eval(struct blk *restrict b, int m, double tau,
+                     const struct contact_coeffs *restrict c)
+{
+    const double zeta2 = 2.0 * c->zeta, tn = c->hertz_tn;
+    const double ratio_t = c->ratio_t, mu = c->mu;
+    #pragma omp simd
+    for (int k = 0; k < m; k++) {
+        double dx = b->dx[0][k], dy = b->dx[1][k], dz = b->dx[2][k];
+        double d2 = 0;
+        d2 += dx * dx;
+        d2 += dy * dy;
+        d2 += dz * dz;
+        double rs = b->rs[k];
+        int on = !(d2 >= rs * rs);
+        double dist = sqrt(d2), inv = 1.0 / dist;
+        double n0 = dx * inv, n1 = dy * inv, n2 = dz * inv;
+        double delta = rs - dist;
+        /* kinematics (fill_kinematics) */
+        double s0 = b->sw[0][k], s1 = b->sw[1][k], s2_ = b->sw[2][k];
+        double rw0 = s1 * n2 - s2_ * n1;
+        double rw1 = s2_ * n0 - s0 * n2;
+        double rw2 = s0 * n1 - s1 * n0;
+        double vr0 = b->dv[0][k] + rw0, vr1 = b->dv[1][k] + rw1;
+        double vr2 = b->dv[2][k] + rw2;
+        double vn = vr0 * n0 + vr1 * n1 + vr2 * n2;
+        double vt0 = vr0 - vn * n0, vt1 = vr1 - vn * n1, vt2 = vr2 - vn * n2;
+        /* the law (contact_eval_fused) */
+        double chi = b->chi[k];
+        double sd = sqrt(delta);
+        double chisd = chi * sd;
+        double kn = 1.5 * chisd, kt = ratio_t * chisd;
+        double eta_n = zeta2 * sqrt(kn * b->mstar[k]);
+        double eta_t = eta_n * tn;
+        double fn = chisd * delta + eta_n * vn;
+        double h0 = b->h[0][k], h1 = b->h[1][k], h2 = b->h[2][k];
+        double hn = h0 * n0 + h1 * n1 + h2 * n2;
+        double t0 = h0 - hn * n0, t1 = h1 - hn * n1, t2 = h2 - hn * n2;
+        double hh = h0 * h0 + h1 * h1 + h2 * h2;
+        double ss = hh - hn * hn;
+        double scale = sqrt(hh / ss);
+        int rot = (hn != 0) & (ss > 0);
+        double r0 = t0 * scale, r1 = t1 * scale, r2 = t2 * scale;
+        t0 = rot ? r0 : t0;
+        t1 = rot ? r1 : t1;
+        t2 = rot ? r2 : t2;
+        t0 += tau * vt0;
+        t1 += tau * vt1;
+        t2 += tau * vt2;
+        double f0 = -kt * t0 - eta_t * vt0;
+        double f1 = -kt * t1 - eta_t * vt1;
+        double f2 = -kt * t2 - eta_t * vt2;
+        double fmax = mu * fabs(fn);
+        double ff = f0 * f0 + f1 * f1 + f2 * f2;
+        int slide = ff > fmax * fmax;
+        double sl = sqrt(t0 * t0 + t1 * t1 + t2 * t2);
+        double fl = sqrt(ff);
+        int along = (sl > 0) & (kt > 0);
+        /* sliding along the spring */
+        double a0 = -fmax * t0 / sl, a1 = -fmax * t1 / sl;
+        double a2 = -fmax * t2 / sl;
+        double sc = fmax / (kt * sl);
+        /* sliding without a spring */
+        double sf = fmax / fl;
+        double b0 = f0 * sf, b1 = f1 * sf, b2 = f2 * sf;
+        double c0 = t0 * sc, c1 = t1 * sc, c2 = t2 * sc;
+        double g0 = slide ? (along ? a0 : b0) : f0;
+        double g1 = slide ? (along ? a1 : b1) : f1;
+        double g2 = slide ? (along ? a2 : b2) : f2;
+        double u0 = slide ? (along ? c0 : 0.0) : t0;
+        double u1 = slide ? (along ? c1 : 0.0) : t1;
+        double u2 = slide ? (along ? c2 : 0.0) : t2;
+        /* out of contact: the spring is cleared (left alone when zero) */
+        int nz = (h0 != 0) | (h1 != 0) | (h2 != 0);
+        b->hn[0][k] = on ? u0 : (nz ? 0.0 : h0);
+        b->hn[1][k] = on ? u1 : (nz ? 0.0 : h1);
+        b->hn[2][k] = on ? u2 : (nz ? 0.0 : h2);
+        b->f[0][k] = -fn * n0 + g0;
+        b->f[1][k] = -fn * n1 + g1;
+        b->f[2][k] = -fn * n2 + g2;
+        double tc0 = n1 * g2 - n2 * g1;
+        double tc1 = n2 * g0 - n0 * g2;
+        double tc2 = n0 * g1 - n1 * g0;
+        double ri = b->ri[k], rj = b->rj[k];
+        b->ti[0][k] = ri * tc0 + 0.0;
+        b->ti[1][k] = ri * tc1 + 0.0;
+        b->ti[2][k] = ri * tc2 + 0.0;
+        b->tj[0][k] = rj * tc0 - 0.0;
+        b->tj[1][k] = rj * tc1 - 0.0;
+        b->tj[2][k] = rj * tc2 - 0.0;
+        b->w2[k] = kn * b->sim[k];
+        b->on[k] = on;
+    }
+}
+
+
+
+struct fast {
+    struct dem *d;
+    const double *x, *v, *w, *fext, *fd;
+    double *acc, *alpha, *ft6, *pf;
+    double tau, kick;
+    int commit, drag;
+    long nwc;
+    double om2;
+};
+
+/* Walls of grain i (wall_row, dem_forces.c), added to its sums fi, ti;
+ * then its accelerations and closing half kick (finish, dem_forces.c). */
+static inline void grain_done(struct fast *F, size_t i)
+{
+    struct dem *d = F->d;
+    const double *xi = &F->x[3 * i], *vi = &F->v[3 * i], *wi = &F->w[3 * i];
+    double ri = d->r[i], inv_mi = d->inv_m[i];
+    double *fti = &F->ft6[6 * i];
+    int nwalls = d->nwalls, use_wlist = d->use_wlist;
+    size_t q0 = use_wlist ? d->wstart[i] : 0;
+    size_t q1 = use_wlist ? d->wstart[i + 1] : (size_t)nwalls;
+    for (size_t q = q0; q < q1; q++) {
+        int wl = use_wlist ? d->wlist[q] : (int)q;
+        size_t hk = 3 * (i * (size_t)nwalls + (size_t)wl);
+        const struct dem_wall *wa = &d->walls[wl];
+        struct contact_geom g;
+        double *h = &d->whist[hk];
+        if (!wall_contact_inline(wa, xi, ri, g.n, &g.delta)) {
+            if (F->commit && (h[0] != 0 || h[1] != 0 || h[2] != 0))
+                h[0] = h[1] = h[2] = 0;
+            continue;
+        }
+        g.rstar = ri;
+        g.mstar = d->m[i];
+        g.chi = d->wall_chi[i];
+        const double *vw = wa->vel;
+        double s[3], rw[3], vr[3];
+        for (int a = 0; a < 3; a++)
+            s[a] = ri * wi[a] + 0.0;
+        rw[0] = s[1] * g.n[2] - s[2] * g.n[1];
+        rw[1] = s[2] * g.n[0] - s[0] * g.n[2];
+        rw[2] = s[0] * g.n[1] - s[1] * g.n[0];
+        for (int a = 0; a < 3; a++)
+            vr[a] = vi[a] - vw[a] + rw[a];
+        g.vn = vr[0] * g.n[0] + vr[1] * g.n[1] + vr[2] * g.n[2];
+        for (int a = 0; a < 3; a++)
+            g.vt[a] = vr[a] - g.vn * g.n[a];
+        struct contact_result res;
+        double hn[3];
+        contact_eval_fused(&d->law, &g, h, F->tau, hn, &res);
+        if (F->commit) {
+            h[0] = hn[0];
+            h[1] = hn[1];
+            h[2] = hn[2];
+        }
+        double tc[3];
+        tc[0] = g.n[1] * res.ft[2] - g.n[2] * res.ft[1];
+        tc[1] = g.n[2] * res.ft[0] - g.n[0] * res.ft[2];
+        tc[2] = g.n[0] * res.ft[1] - g.n[1] * res.ft[0];
+        int pa = wa->patch;
+        for (int a = 0; a < 3; a++) {
+            fti[a] += res.f[a];
+            fti[3 + a] += ri * tc[a] + res.mroll[a];
+            F->pf[3 * pa + a] -= res.f[a];
+        }
+        F->nwc++;
+        double w2 = res.kn * inv_mi;
+        F->om2 = w2 > F->om2 ? w2 : F->om2;
+    }
+    double inv_ii = d->inv_i[i];
+    for (int a = 0; a < 3; a++) {
+        size_t k = 3 * i + a;
+        double fk = fti[a] + (F->fext ? F->fext[k] : 0.0)
+                    + (F->drag ? F->fd[k] : 0.0);
+        F->acc[k] = fk * inv_mi + d->gravity[a];
+        F->alpha[k] = fti[3 + a] * inv_ii;
+        fti[a] = fti[3 + a] = 0;
+        if (F->kick != 0) {
+            d->v[k] += F->kick * F->acc[k];
+            d->w[k] += F->kick * F->alpha[k];
+        }
+    }
+}
+
 int dem_forces_fast(struct dem *d, const double *x, const double *v,
                     const double *w, double tau, int commit, double *acc,
                     double *alpha)
@@ -47,169 +250,81 @@ int dem_forces_fast(struct dem *d, const double *x, const double *v,
         if (rc != SIM_OK)
             return rc;
     }
-    const double *fext = c->fext, *fd = c->fd;
+    double pf[3 * DEM_MAX_PATCHES] = {0};
+    struct fast F = {
+        .d = d, .x = x, .v = v, .w = w, .fext = c->fext, .fd = c->fd,
+        .acc = acc, .alpha = alpha, .ft6 = d->tbuf, .pf = pf, .tau = tau,
+        .kick = d->kick, .commit = commit, .drag = drag,
+    };
     const double *restrict r = d->r, *restrict inv_m = d->inv_m;
-    const double *restrict inv_i = d->inv_i;
     const double *restrict pair_c = d->pair_c;
     const uint32_t *restrict nlj = d->nl.j;
     const size_t *restrict start = d->nl.start;
-    double *restrict hist = d->hist, *restrict whist = d->whist;
+    double *restrict hist = d->hist;
     double *restrict ft6 = d->tbuf;   /* 6 per grain: f, t; all zero
                                          outside this function */
-    const double g0 = d->gravity[0], g1 = d->gravity[1], g2 = d->gravity[2];
-    const double kick = d->kick;
-    const int nwalls = d->nwalls, use_wlist = d->use_wlist;
-    double pf[3 * DEM_MAX_PATCHES] = {0};
-    long nc = 0, nwc = 0;
+    size_t np = n ? start[n] : 0;
+    struct blk b;
+    uint32_t bi[BLK];
+    long nc = 0;
     double om2 = 0;
-    for (size_t i = 0; i < n; i++) {
-        const double *xi = &x[3 * i], *vi = &v[3 * i], *wi = &w[3 * i];
-        const double ri = r[i], inv_mi = inv_m[i];
-        double *fti = &ft6[6 * i];
-        double fx = fti[0], fy = fti[1], fz = fti[2];
-        double tx = fti[3], ty = fti[4], tz = fti[5];
-        for (size_t p = start[i]; p < start[i + 1]; p++) {
+    size_t row = 0;   /* rows below are done */
+    for (size_t p0 = 0; p0 < np; p0 += BLK) {
+        int m = np - p0 < BLK ? (int)(np - p0) : BLK;
+        /* gather */
+        size_t i = row;
+        for (int k = 0; k < m; k++) {
+            size_t p = p0 + (size_t)k;
+            while (start[i + 1] <= p)
+                i++;
             size_t j = nlj[p];
-            const double *xj = &x[3 * j];
-            double dx[3], d2 = 0;
+            bi[k] = (uint32_t)i;
             for (int a = 0; a < 3; a++) {
-                dx[a] = xj[a] - xi[a];
-                d2 += dx[a] * dx[a];
+                b.dx[a][k] = x[3 * j + a] - x[3 * i + a];
+                b.dv[a][k] = v[3 * i + a] - v[3 * j + a];
+                b.sw[a][k] = r[i] * w[3 * i + a] + r[j] * w[3 * j + a];
+                b.h[a][k] = hist[3 * p + a];
             }
-            double rj = r[j];
-            double rs = ri + rj;
-            double *h = &hist[3 * p];
-            if (d2 >= rs * rs) {
-                if (commit && (h[0] != 0 || h[1] != 0 || h[2] != 0))
-                    h[0] = h[1] = h[2] = 0;   /* the contact ended */
+            b.rs[k] = r[i] + r[j];
+            b.ri[k] = r[i];
+            b.rj[k] = r[j];
+            b.chi[k] = pair_c[2 * p];
+            b.mstar[k] = pair_c[2 * p + 1];
+            b.sim[k] = inv_m[i] + inv_m[j];
+        }
+        blk_eval(&b, m, tau, &d->law.c);
+        /* scatter in list order */
+        for (int k = 0; k < m; k++) {
+            size_t p = p0 + (size_t)k;
+            i = bi[k];
+            while (row < i)
+                grain_done(&F, row++);
+            if (commit)
+                for (int a = 0; a < 3; a++)
+                    hist[3 * p + a] = b.hn[a][k];
+            if (!b.on[k])
                 continue;
-            }
-            struct contact_geom g;
-            double dist = sqrt(d2), inv = 1.0 / dist;
-            for (int a = 0; a < 3; a++)
-                g.n[a] = dx[a] * inv;
-            g.delta = rs - dist;
-            g.rstar = 0.0;
-            g.chi = pair_c[2 * p];
-            g.mstar = pair_c[2 * p + 1];
-            double sum_inv_m = inv_mi + inv_m[j];
-            /* fill_kinematics (dem_forces.c) of a pair */
-            const double *vj = &v[3 * j], *wj = &w[3 * j];
-            double s[3], rw[3], vr[3];
-            for (int a = 0; a < 3; a++)
-                s[a] = ri * wi[a] + rj * wj[a];
-            rw[0] = s[1] * g.n[2] - s[2] * g.n[1];
-            rw[1] = s[2] * g.n[0] - s[0] * g.n[2];
-            rw[2] = s[0] * g.n[1] - s[1] * g.n[0];
-            for (int a = 0; a < 3; a++)
-                vr[a] = vi[a] - vj[a] + rw[a];
-            g.vn = vr[0] * g.n[0] + vr[1] * g.n[1] + vr[2] * g.n[2];
-            for (int a = 0; a < 3; a++)
-                g.vt[a] = vr[a] - g.vn * g.n[a];
-            struct contact_result res;
-            double hn[3];
-            contact_eval_fused(&d->law, &g, h, tau, hn, &res);
-            if (commit) {
-                h[0] = hn[0];
-                h[1] = hn[1];
-                h[2] = hn[2];
-            }
-            double tc[3];
-            tc[0] = g.n[1] * res.ft[2] - g.n[2] * res.ft[1];
-            tc[1] = g.n[2] * res.ft[0] - g.n[0] * res.ft[2];
-            tc[2] = g.n[0] * res.ft[1] - g.n[1] * res.ft[0];
-            double *ftj = &ft6[6 * j];
-            fx += res.f[0];
-            fy += res.f[1];
-            fz += res.f[2];
-            tx += ri * tc[0] + res.mroll[0];
-            ty += ri * tc[1] + res.mroll[1];
-            tz += ri * tc[2] + res.mroll[2];
+            size_t j = nlj[p];
+            double *fti = &ft6[6 * i], *ftj = &ft6[6 * j];
             for (int a = 0; a < 3; a++) {
-                ftj[a] -= res.f[a];
-                ftj[3 + a] += rj * tc[a] - res.mroll[a];
+                fti[a] += b.f[a][k];
+                ftj[a] -= b.f[a][k];
+                fti[3 + a] += b.ti[a][k];
+                ftj[3 + a] += b.tj[a][k];
             }
             nc++;
-            double w2 = res.kn * sum_inv_m;
-            om2 = w2 > om2 ? w2 : om2;
-        }
-        /* walls (wall_row, dem_forces.c) */
-        size_t q0 = use_wlist ? d->wstart[i] : 0;
-        size_t q1 = use_wlist ? d->wstart[i + 1] : (size_t)nwalls;
-        for (size_t q = q0; q < q1; q++) {
-            int wl = use_wlist ? d->wlist[q] : (int)q;
-            size_t hk = 3 * (i * (size_t)nwalls + (size_t)wl);
-            const struct dem_wall *wa = &d->walls[wl];
-            struct contact_geom g;
-            double *h = &whist[hk];
-            if (!wall_contact_inline(wa, xi, ri, g.n, &g.delta)) {
-                if (commit && (h[0] != 0 || h[1] != 0 || h[2] != 0))
-                    h[0] = h[1] = h[2] = 0;
-                continue;
-            }
-            g.rstar = ri;
-            g.mstar = d->m[i];
-            g.chi = d->wall_chi[i];
-            const double *vw = wa->vel;
-            double s[3], rw[3], vr[3];
-            for (int a = 0; a < 3; a++)
-                s[a] = ri * wi[a] + 0.0;
-            rw[0] = s[1] * g.n[2] - s[2] * g.n[1];
-            rw[1] = s[2] * g.n[0] - s[0] * g.n[2];
-            rw[2] = s[0] * g.n[1] - s[1] * g.n[0];
-            for (int a = 0; a < 3; a++)
-                vr[a] = vi[a] - vw[a] + rw[a];
-            g.vn = vr[0] * g.n[0] + vr[1] * g.n[1] + vr[2] * g.n[2];
-            for (int a = 0; a < 3; a++)
-                g.vt[a] = vr[a] - g.vn * g.n[a];
-            struct contact_result res;
-            double hn[3];
-            contact_eval_fused(&d->law, &g, h, tau, hn, &res);
-            if (commit) {
-                h[0] = hn[0];
-                h[1] = hn[1];
-                h[2] = hn[2];
-            }
-            double tc[3];
-            tc[0] = g.n[1] * res.ft[2] - g.n[2] * res.ft[1];
-            tc[1] = g.n[2] * res.ft[0] - g.n[0] * res.ft[2];
-            tc[2] = g.n[0] * res.ft[1] - g.n[1] * res.ft[0];
-            int pa = wa->patch;
-            fx += res.f[0];
-            fy += res.f[1];
-            fz += res.f[2];
-            tx += ri * tc[0] + res.mroll[0];
-            ty += ri * tc[1] + res.mroll[1];
-            tz += ri * tc[2] + res.mroll[2];
-            for (int a = 0; a < 3; a++)
-                pf[3 * pa + a] -= res.f[a];
-            nwc++;
-            double w2 = res.kn * inv_mi;
-            om2 = w2 > om2 ? w2 : om2;
-        }
-        /* finish (dem_forces.c) for grain i: complete now */
-        double fs[3] = {fx, fy, fz}, ts[3] = {tx, ty, tz};
-        double gv[3] = {g0, g1, g2};
-        double inv_ii = inv_i[i];
-        for (int a = 0; a < 3; a++) {
-            size_t k = 3 * i + a;
-            double fk = fs[a] + (fext ? fext[k] : 0.0)
-                        + (drag ? fd[k] : 0.0);
-            acc[k] = fk * inv_mi + gv[a];
-            alpha[k] = ts[a] * inv_ii;
-            fti[a] = fti[3 + a] = 0;
-            if (kick != 0) {
-                d->v[k] += kick * acc[k];
-                d->w[k] += kick * alpha[k];
-            }
+            om2 = b.w2[k] > om2 ? b.w2[k] : om2;
         }
     }
+    while (row < n)
+        grain_done(&F, row++);
+    (void)r;
     for (int p = 0; p < 3 * DEM_MAX_PATCHES; p++)
         d->patch_force[p] = 0.0 + pf[p];   /* as the reduction over
                                               threads: -0 becomes 0 */
     d->ncontacts = nc;
-    d->nwall_contacts = nwc;
-    d->omega2_max = om2;
+    d->nwall_contacts = F.nwc;
+    d->omega2_max = om2 > F.om2 ? om2 : F.om2;
     d->stats.fevals++;
     return SIM_OK;
 }
