@@ -159,80 +159,100 @@ struct fast {
     double *acc, *alpha, *ft6, *pf;
     double tau, kick;
     int commit, drag;
+    size_t q, nq;   /* wall candidates (use_wlist): the next, their count */
     long nwc;
     double om2;
 };
 
-/* Walls of grain i (wall_row, dem_forces.c), added to its sums fi, ti;
- * then its accelerations and closing half kick (finish, dem_forces.c). */
-static inline void grain_done(struct fast *F, size_t i)
+/* Wall contact of grain i with wall wl (wall_row, dem_forces.c), added to
+ * its sums fti. */
+static inline void wall_one(struct fast *F, size_t i, int wl, double *fti)
 {
     struct dem *d = F->d;
     const double *xi = &F->x[3 * i], *vi = &F->v[3 * i], *wi = &F->w[3 * i];
-    double ri = d->r[i], inv_mi = d->inv_m[i];
-    double *fti = &F->ft6[6 * i];
-    int nwalls = d->nwalls, use_wlist = d->use_wlist;
-    size_t q0 = use_wlist ? d->wstart[i] : 0;
-    size_t q1 = use_wlist ? d->wstart[i + 1] : (size_t)nwalls;
-    for (size_t q = q0; q < q1; q++) {
-        int wl = use_wlist ? d->wlist[q] : (int)q;
-        size_t hk = 3 * (i * (size_t)nwalls + (size_t)wl);
-        const struct dem_wall *wa = &d->walls[wl];
-        struct contact_geom g;
-        double *h = &d->whist[hk];
-        if (!wall_contact_inline(wa, xi, ri, g.n, &g.delta)) {
-            if (F->commit && (h[0] != 0 || h[1] != 0 || h[2] != 0))
-                h[0] = h[1] = h[2] = 0;
-            continue;
-        }
-        g.rstar = ri;
-        g.mstar = d->m[i];
-        g.chi = d->wall_chi[i];
-        const double *vw = wa->vel;
-        double s[3], rw[3], vr[3];
-        for (int a = 0; a < 3; a++)
-            s[a] = ri * wi[a] + 0.0;
-        rw[0] = s[1] * g.n[2] - s[2] * g.n[1];
-        rw[1] = s[2] * g.n[0] - s[0] * g.n[2];
-        rw[2] = s[0] * g.n[1] - s[1] * g.n[0];
-        for (int a = 0; a < 3; a++)
-            vr[a] = vi[a] - vw[a] + rw[a];
-        g.vn = vr[0] * g.n[0] + vr[1] * g.n[1] + vr[2] * g.n[2];
-        for (int a = 0; a < 3; a++)
-            g.vt[a] = vr[a] - g.vn * g.n[a];
-        struct contact_result res;
-        double hn[3];
-        contact_eval_fused(&d->law, &g, h, F->tau, hn, &res);
-        if (F->commit) {
-            h[0] = hn[0];
-            h[1] = hn[1];
-            h[2] = hn[2];
-        }
-        double tc[3];
-        tc[0] = g.n[1] * res.ft[2] - g.n[2] * res.ft[1];
-        tc[1] = g.n[2] * res.ft[0] - g.n[0] * res.ft[2];
-        tc[2] = g.n[0] * res.ft[1] - g.n[1] * res.ft[0];
-        int pa = wa->patch;
-        for (int a = 0; a < 3; a++) {
-            fti[a] += res.f[a];
-            fti[3 + a] += ri * tc[a] + res.mroll[a];
-            F->pf[3 * pa + a] -= res.f[a];
-        }
-        F->nwc++;
-        double w2 = res.kn * inv_mi;
-        F->om2 = w2 > F->om2 ? w2 : F->om2;
+    double ri = d->r[i];
+    size_t hk = 3 * (i * (size_t)d->nwalls + (size_t)wl);
+    const struct dem_wall *wa = &d->walls[wl];
+    struct contact_geom g;
+    double *h = &d->whist[hk];
+    if (!wall_contact_inline(wa, xi, ri, g.n, &g.delta)) {
+        if (F->commit && (h[0] != 0 || h[1] != 0 || h[2] != 0))
+            h[0] = h[1] = h[2] = 0;
+        return;
     }
-    double inv_ii = d->inv_i[i];
+    g.rstar = ri;
+    g.mstar = d->m[i];
+    g.chi = d->wall_chi[i];
+    const double *vw = wa->vel;
+    double s[3], rw[3], vr[3];
+    for (int a = 0; a < 3; a++)
+        s[a] = ri * wi[a] + 0.0;
+    rw[0] = s[1] * g.n[2] - s[2] * g.n[1];
+    rw[1] = s[2] * g.n[0] - s[0] * g.n[2];
+    rw[2] = s[0] * g.n[1] - s[1] * g.n[0];
+    for (int a = 0; a < 3; a++)
+        vr[a] = vi[a] - vw[a] + rw[a];
+    g.vn = vr[0] * g.n[0] + vr[1] * g.n[1] + vr[2] * g.n[2];
+    for (int a = 0; a < 3; a++)
+        g.vt[a] = vr[a] - g.vn * g.n[a];
+    struct contact_result res;
+    double hn[3];
+    contact_eval_fused(&d->law, &g, h, F->tau, hn, &res);
+    if (F->commit) {
+        h[0] = hn[0];
+        h[1] = hn[1];
+        h[2] = hn[2];
+    }
+    double tc[3];
+    tc[0] = g.n[1] * res.ft[2] - g.n[2] * res.ft[1];
+    tc[1] = g.n[2] * res.ft[0] - g.n[0] * res.ft[2];
+    tc[2] = g.n[0] * res.ft[1] - g.n[1] * res.ft[0];
+    int pa = wa->patch;
+    for (int a = 0; a < 3; a++) {
+        fti[a] += res.f[a];
+        fti[3 + a] += ri * tc[a] + res.mroll[a];
+        F->pf[3 * pa + a] -= res.f[a];
+    }
+    F->nwc++;
+    double w2 = res.kn * d->inv_m[i];
+    F->om2 = w2 > F->om2 ? w2 : F->om2;
+}
+
+/* Walls of grain i, then its accelerations and closing half kick (finish,
+ * dem_forces.c). With the wall list, a cursor runs through the
+ * candidates (grain by grain) instead of reading wstart for every
+ * grain: most grains have none. */
+static inline void grain_done(struct fast *F, size_t i)
+{
+    struct dem *d = F->d;
+    double *restrict fti = &F->ft6[6 * i];
+    if (d->use_wlist) {
+        const uint32_t *wg = d->wgrain;
+        while (F->q < F->nq && wg[F->q] == i) {
+            wall_one(F, i, d->wlist[F->q], fti);
+            F->q++;
+        }
+    } else {
+        for (int wl = 0; wl < d->nwalls; wl++)
+            wall_one(F, i, wl, fti);
+    }
+    const double inv_mi = d->inv_m[i], inv_ii = d->inv_i[i];
+    const double *restrict fext = F->fext, *restrict fd = F->fd;
+    double *restrict acc = &F->acc[3 * i], *restrict alpha = &F->alpha[3 * i];
+    double *restrict vi = &d->v[3 * i], *restrict wi = &d->w[3 * i];
+    const double kick = F->kick;
+    const int drag = F->drag;
     for (int a = 0; a < 3; a++) {
         size_t k = 3 * i + a;
-        double fk = fti[a] + (F->fext ? F->fext[k] : 0.0)
-                    + (F->drag ? F->fd[k] : 0.0);
-        F->acc[k] = fk * inv_mi + d->gravity[a];
-        F->alpha[k] = fti[3 + a] * inv_ii;
+        double fk = fti[a] + (fext ? fext[k] : 0.0) + (drag ? fd[k] : 0.0);
+        double ak = fk * inv_mi + d->gravity[a];
+        double alk = fti[3 + a] * inv_ii;
+        acc[a] = ak;
+        alpha[a] = alk;
         fti[a] = fti[3 + a] = 0;
-        if (F->kick != 0) {
-            d->v[k] += F->kick * F->acc[k];
-            d->w[k] += F->kick * F->alpha[k];
+        if (kick != 0) {
+            vi[a] += kick * ak;
+            wi[a] += kick * alk;
         }
     }
 }
@@ -255,6 +275,7 @@ int dem_forces_fast(struct dem *d, const double *x, const double *v,
         .d = d, .x = x, .v = v, .w = w, .fext = c->fext, .fd = c->fd,
         .acc = acc, .alpha = alpha, .ft6 = d->tbuf, .pf = pf, .tau = tau,
         .kick = d->kick, .commit = commit, .drag = drag,
+        .nq = d->use_wlist && n ? d->wstart[n] : 0,
     };
     const double *restrict r = d->r, *restrict inv_m = d->inv_m;
     const double *restrict pair_c = d->pair_c;

@@ -12,7 +12,8 @@
 # Default cases:
 #   mpsFluid/hydrostaticTank2D:0.05 mpsFluid/damBreak2D:0.02
 #   mpsFluid/damBreakObstacle:0.01 mpsDem/singleGrainSettling:0.02
-# A case whose Allrun uses runTandem runs coupled (mpsFluid + demSolid).
+# A case whose Allrun uses runTandem runs coupled (mpsFluid + demSolid),
+# one whose Allrun runs demSolid runs demSolid alone (tutorials/demSolid).
 #
 # Output, one line per case and field (cloud.field_component, summed over
 # every written file of that cloud):
@@ -61,6 +62,8 @@ run_case()
         runApplication genParticles > /dev/null || exit 1
         if grep -qs '^[^#]*runTandem' Allrun; then
             runTandem mpsFluid demSolid > /dev/null || exit 1
+        elif grep -qs '^[^#]*runApplication demSolid' Allrun; then
+            runApplication demSolid > /dev/null || exit 1
         else
             runApplication mpsFluid > /dev/null || exit 1
         fi
