@@ -46,10 +46,10 @@ int dem_forces_fast_ok(const struct dem *d, int nth)
 
 struct blk {
     /* gathered */
-    double dx[3][BLK], rs[BLK], ri[BLK], rj[BLK], chi[BLK], mstar[BLK];
-    double sim[BLK], dv[3][BLK], sw[3][BLK], h[3][BLK];
-    /* evaluated */
-    double f[3][BLK], ti[3][BLK], tj[3][BLK], hn[3][BLK], w2[BLK];
+    double dx[3][BLK], rs[BLK], chi[BLK], mstar[BLK];
+    double dv[3][BLK], sw[3][BLK], h[3][BLK];
+    /* evaluated: force on i, n x F^t, new spring, normal stiffness */
+    double f[3][BLK], tc[3][BLK], hn[3][BLK], kn[BLK];
     int on[BLK];
 };
 
@@ -139,14 +139,10 @@ static void blk_eval(struct blk *restrict b, int m, double tau,
         double tc0 = n1 * g2 - n2 * g1;
         double tc1 = n2 * g0 - n0 * g2;
         double tc2 = n0 * g1 - n1 * g0;
-        double ri = b->ri[k], rj = b->rj[k];
-        b->ti[0][k] = ri * tc0 + 0.0;
-        b->ti[1][k] = ri * tc1 + 0.0;
-        b->ti[2][k] = ri * tc2 + 0.0;
-        b->tj[0][k] = rj * tc0 - 0.0;
-        b->tj[1][k] = rj * tc1 - 0.0;
-        b->tj[2][k] = rj * tc2 - 0.0;
-        b->w2[k] = kn * b->sim[k];
+        b->tc[0][k] = tc0;
+        b->tc[1][k] = tc1;
+        b->tc[2][k] = tc2;
+        b->kn[k] = kn;
         b->on[k] = on;
     }
 }
@@ -307,11 +303,8 @@ int dem_forces_fast(struct dem *d, const double *x, const double *v,
                 b.h[a][k] = hist[3 * p + a];
             }
             b.rs[k] = r[i] + r[j];
-            b.ri[k] = r[i];
-            b.rj[k] = r[j];
             b.chi[k] = pair_c[2 * p];
             b.mstar[k] = pair_c[2 * p + 1];
-            b.sim[k] = inv_m[i] + inv_m[j];
         }
         blk_eval(&b, m, tau, &d->law.c);
         /* scatter in list order */
@@ -327,14 +320,17 @@ int dem_forces_fast(struct dem *d, const double *x, const double *v,
                 continue;
             size_t j = nlj[p];
             double *fti = &ft6[6 * i], *ftj = &ft6[6 * j];
-            for (int a = 0; a < 3; a++) {
+            double ri = r[i], rj = r[j];
+            for (int a = 0; a < 3; a++) {   /* the moments as pair_row's,
+                                               with mroll = 0 */
                 fti[a] += b.f[a][k];
                 ftj[a] -= b.f[a][k];
-                fti[3 + a] += b.ti[a][k];
-                ftj[3 + a] += b.tj[a][k];
+                fti[3 + a] += ri * b.tc[a][k] + 0.0;
+                ftj[3 + a] += rj * b.tc[a][k] - 0.0;
             }
             nc++;
-            om2 = b.w2[k] > om2 ? b.w2[k] : om2;
+            double w2 = b.kn[k] * (inv_m[i] + inv_m[j]);
+            om2 = w2 > om2 ? w2 : om2;
         }
     }
     while (row < n)
