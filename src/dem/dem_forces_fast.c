@@ -57,41 +57,28 @@ struct blk {
  * (discarded) would otherwise be a call that sets errno and no vector */
 
 
-static void blk_eval(struct blk *restrict b, int m, double tau,
-                     const struct contact_coeffs *restrict c)
+/* The law (contact_eval_fused) on one lane: normal n, overlap delta,
+ * relative velocity vr (with the rotation), chi, m*, spring h; out: the
+ * force on the first body f, n x F^t tc, the new spring u, kn. */
+struct lane {
+    double f[3], tc[3], u[3], kn;
+};
+
+static inline __attribute__((always_inline)) struct lane
+law_lane(double n0, double n1, double n2, double delta, double vr0,
+         double vr1, double vr2, double chi, double mstar, double h0,
+         double h1, double h2, double tau, double zeta2, double tn,
+         double ratio_t, double mu)
 {
-    const double zeta2 = 2.0 * c->zeta, tn = c->hertz_tn;
-    const double ratio_t = c->ratio_t, mu = c->mu;
-    #pragma omp simd
-    for (int k = 0; k < m; k++) {
-        double dx = b->dx[0][k], dy = b->dx[1][k], dz = b->dx[2][k];
-        double d2 = 0;
-        d2 += dx * dx;
-        d2 += dy * dy;
-        d2 += dz * dz;
-        double rs = b->rs[k];
-        int on = !(d2 >= rs * rs);
-        double dist = sqrt(d2), inv = 1.0 / dist;
-        double n0 = dx * inv, n1 = dy * inv, n2 = dz * inv;
-        double delta = rs - dist;
-        /* kinematics (fill_kinematics) */
-        double s0 = b->sw[0][k], s1 = b->sw[1][k], s2_ = b->sw[2][k];
-        double rw0 = s1 * n2 - s2_ * n1;
-        double rw1 = s2_ * n0 - s0 * n2;
-        double rw2 = s0 * n1 - s1 * n0;
-        double vr0 = b->dv[0][k] + rw0, vr1 = b->dv[1][k] + rw1;
-        double vr2 = b->dv[2][k] + rw2;
+        struct lane o;
         double vn = vr0 * n0 + vr1 * n1 + vr2 * n2;
         double vt0 = vr0 - vn * n0, vt1 = vr1 - vn * n1, vt2 = vr2 - vn * n2;
-        /* the law (contact_eval_fused) */
-        double chi = b->chi[k];
         double sd = sqrt(delta);
         double chisd = chi * sd;
         double kn = 1.5 * chisd, kt = ratio_t * chisd;
-        double eta_n = zeta2 * sqrt(kn * b->mstar[k]);
+        double eta_n = zeta2 * sqrt(kn * mstar);
         double eta_t = eta_n * tn;
         double fn = chisd * delta + eta_n * vn;
-        double h0 = b->h[0][k], h1 = b->h[1][k], h2 = b->h[2][k];
         double hn = h0 * n0 + h1 * n1 + h2 * n2;
         double t0 = h0 - hn * n0, t1 = h1 - hn * n1, t2 = h2 - hn * n2;
         double hh = h0 * h0 + h1 * h1 + h2 * h2;
@@ -125,29 +112,96 @@ static void blk_eval(struct blk *restrict b, int m, double tau,
         double g0 = slide ? (along ? a0 : b0) : f0;
         double g1 = slide ? (along ? a1 : b1) : f1;
         double g2 = slide ? (along ? a2 : b2) : f2;
-        double u0 = slide ? (along ? c0 : 0.0) : t0;
-        double u1 = slide ? (along ? c1 : 0.0) : t1;
-        double u2 = slide ? (along ? c2 : 0.0) : t2;
+        o.u[0] = slide ? (along ? c0 : 0.0) : t0;
+        o.u[1] = slide ? (along ? c1 : 0.0) : t1;
+        o.u[2] = slide ? (along ? c2 : 0.0) : t2;
+        o.f[0] = -fn * n0 + g0;
+        o.f[1] = -fn * n1 + g1;
+        o.f[2] = -fn * n2 + g2;
+        o.tc[0] = n1 * g2 - n2 * g1;
+        o.tc[1] = n2 * g0 - n0 * g2;
+        o.tc[2] = n0 * g1 - n1 * g0;
+        o.kn = kn;
+        return o;
+}
+
+static void blk_eval(struct blk *restrict b, int m, double tau,
+                     const struct contact_coeffs *restrict c)
+{
+    const double zeta2 = 2.0 * c->zeta, tn = c->hertz_tn;
+    const double ratio_t = c->ratio_t, mu = c->mu;
+    #pragma omp simd
+    for (int k = 0; k < m; k++) {
+        double dx = b->dx[0][k], dy = b->dx[1][k], dz = b->dx[2][k];
+        double d2 = 0;
+        d2 += dx * dx;
+        d2 += dy * dy;
+        d2 += dz * dz;
+        double rs = b->rs[k];
+        int on = !(d2 >= rs * rs);
+        double dist = sqrt(d2), inv = 1.0 / dist;
+        double n0 = dx * inv, n1 = dy * inv, n2 = dz * inv;
+        double delta = rs - dist;
+        /* kinematics (fill_kinematics) */
+        double s0 = b->sw[0][k], s1 = b->sw[1][k], s2_ = b->sw[2][k];
+        double rw0 = s1 * n2 - s2_ * n1;
+        double rw1 = s2_ * n0 - s0 * n2;
+        double rw2 = s0 * n1 - s1 * n0;
+        double vr0 = b->dv[0][k] + rw0, vr1 = b->dv[1][k] + rw1;
+        double vr2 = b->dv[2][k] + rw2;
+        double h0 = b->h[0][k], h1 = b->h[1][k], h2 = b->h[2][k];
+        struct lane o = law_lane(n0, n1, n2, delta, vr0, vr1, vr2,
+                                 b->chi[k], b->mstar[k], h0, h1, h2, tau,
+                                 zeta2, tn, ratio_t, mu);
         /* out of contact: the spring is cleared (left alone when zero) */
         int nz = (h0 != 0) | (h1 != 0) | (h2 != 0);
-        b->hn[0][k] = on ? u0 : (nz ? 0.0 : h0);
-        b->hn[1][k] = on ? u1 : (nz ? 0.0 : h1);
-        b->hn[2][k] = on ? u2 : (nz ? 0.0 : h2);
-        b->f[0][k] = -fn * n0 + g0;
-        b->f[1][k] = -fn * n1 + g1;
-        b->f[2][k] = -fn * n2 + g2;
-        double tc0 = n1 * g2 - n2 * g1;
-        double tc1 = n2 * g0 - n0 * g2;
-        double tc2 = n0 * g1 - n1 * g0;
-        b->tc[0][k] = tc0;
-        b->tc[1][k] = tc1;
-        b->tc[2][k] = tc2;
-        b->kn[k] = kn;
+        b->hn[0][k] = on ? o.u[0] : (nz ? 0.0 : h0);
+        b->hn[1][k] = on ? o.u[1] : (nz ? 0.0 : h1);
+        b->hn[2][k] = on ? o.u[2] : (nz ? 0.0 : h2);
+        b->f[0][k] = o.f[0];
+        b->f[1][k] = o.f[1];
+        b->f[2][k] = o.f[2];
+        b->tc[0][k] = o.tc[0];
+        b->tc[1][k] = o.tc[1];
+        b->tc[2][k] = o.tc[2];
+        b->kn[k] = o.kn;
         b->on[k] = on;
     }
 }
 
+/* Wall candidates in blocks too: geometry (wall_contact_inline) by a
+ * scalar pass, the law as vectors. */
+struct wblk {
+    double n[3][BLK], delta[BLK], vr[3][BLK], chi[BLK], mstar[BLK];
+    double h[3][BLK];
+    double f[3][BLK], tc[3][BLK], hn[3][BLK], kn[BLK];
+    int on[BLK];
+};
 
+static void wblk_eval(struct wblk *restrict b, int m, double tau,
+                      const struct contact_coeffs *restrict c)
+{
+    const double zeta2 = 2.0 * c->zeta, tn = c->hertz_tn;
+    const double ratio_t = c->ratio_t, mu = c->mu;
+    #pragma omp simd
+    for (int k = 0; k < m; k++) {
+        struct lane o = law_lane(b->n[0][k], b->n[1][k], b->n[2][k],
+                                 b->delta[k], b->vr[0][k], b->vr[1][k],
+                                 b->vr[2][k], b->chi[k], b->mstar[k],
+                                 b->h[0][k], b->h[1][k], b->h[2][k], tau,
+                                 zeta2, tn, ratio_t, mu);
+        b->hn[0][k] = o.u[0];
+        b->hn[1][k] = o.u[1];
+        b->hn[2][k] = o.u[2];
+        b->f[0][k] = o.f[0];
+        b->f[1][k] = o.f[1];
+        b->f[2][k] = o.f[2];
+        b->tc[0][k] = o.tc[0];
+        b->tc[1][k] = o.tc[1];
+        b->tc[2][k] = o.tc[2];
+        b->kn[k] = o.kn;
+    }
+}
 
 struct fast {
     struct dem *d;
@@ -156,6 +210,9 @@ struct fast {
     double tau, kick;
     int commit, drag;
     size_t q, nq;   /* wall candidates (use_wlist): the next, their count */
+    struct wblk *wb;   /* evaluated candidates wq0 .. wq0 + wm - 1 */
+    size_t wq0;
+    int wm;
     long nwc;
     double om2;
 };
@@ -214,6 +271,82 @@ static inline void wall_one(struct fast *F, size_t i, int wl, double *fti)
     F->om2 = w2 > F->om2 ? w2 : F->om2;
 }
 
+/* Evaluate the wall candidates from q0 on (BLK of them at most): all
+ * belong to grains not finished yet. */
+static void wall_block(struct fast *F, size_t q0)
+{
+    struct dem *d = F->d;
+    struct wblk *restrict b = F->wb;
+    int m = F->nq - q0 < BLK ? (int)(F->nq - q0) : BLK;
+    /* the springs are scattered (3 per grain and wall): ask for all of
+     * the block's at once */
+    for (int k = 0; k < m; k++) {
+        size_t q = q0 + (size_t)k;
+        __builtin_prefetch(&d->whist[3 * (d->wgrain[q] * (size_t)d->nwalls
+                                          + (size_t)d->wlist[q])], 1);
+    }
+    for (int k = 0; k < m; k++) {
+        size_t q = q0 + (size_t)k, i = d->wgrain[q];
+        int wl = d->wlist[q];
+        const struct dem_wall *wa = &d->walls[wl];
+        const double *vi = &F->v[3 * i], *wi = &F->w[3 * i];
+        double ri = d->r[i];
+        double n[3] = {0, 0, 1}, delta = 0;
+        int on = wall_contact_inline(wa, &F->x[3 * i], ri, n, &delta);
+        b->on[k] = on;
+        if (!on)
+            n[0] = 0, n[1] = 0, n[2] = 1, delta = 0;
+        /* fill_kinematics of a wall in rigid translation */
+        double s[3], rw[3];
+        for (int a = 0; a < 3; a++)
+            s[a] = ri * wi[a] + 0.0;
+        rw[0] = s[1] * n[2] - s[2] * n[1];
+        rw[1] = s[2] * n[0] - s[0] * n[2];
+        rw[2] = s[0] * n[1] - s[1] * n[0];
+        const double *h = &d->whist[3 * (i * (size_t)d->nwalls + (size_t)wl)];
+        for (int a = 0; a < 3; a++) {
+            b->n[a][k] = n[a];
+            b->vr[a][k] = vi[a] - wa->vel[a] + rw[a];
+            b->h[a][k] = h[a];
+        }
+        b->delta[k] = delta;
+        b->chi[k] = d->wall_chi[i];
+        b->mstar[k] = d->m[i];
+    }
+    wblk_eval(b, m, F->tau, &d->law.c);
+    F->wq0 = q0;
+    F->wm = m;
+}
+
+/* Wall candidate q (of grain i), evaluated by wall_block, into fti. */
+static inline void wall_take(struct fast *F, size_t q, size_t i, double *fti)
+{
+    struct dem *d = F->d;
+    if (q >= F->wq0 + (size_t)F->wm)
+        wall_block(F, q);
+    const struct wblk *b = F->wb;
+    int k = (int)(q - F->wq0), wl = d->wlist[q];
+    double *h = &d->whist[3 * (i * (size_t)d->nwalls + (size_t)wl)];
+    if (!b->on[k]) {
+        if (F->commit && (h[0] != 0 || h[1] != 0 || h[2] != 0))
+            h[0] = h[1] = h[2] = 0;
+        return;
+    }
+    if (F->commit)
+        for (int a = 0; a < 3; a++)
+            h[a] = b->hn[a][k];
+    double ri = d->r[i];
+    int pa = d->walls[wl].patch;
+    for (int a = 0; a < 3; a++) {
+        fti[a] += b->f[a][k];
+        fti[3 + a] += ri * b->tc[a][k] + 0.0;   /* mroll = 0 */
+        F->pf[3 * pa + a] -= b->f[a][k];
+    }
+    F->nwc++;
+    double w2 = b->kn[k] * d->inv_m[i];
+    F->om2 = w2 > F->om2 ? w2 : F->om2;
+}
+
 /* Walls of grain i, then its accelerations and closing half kick (finish,
  * dem_forces.c). With the wall list, a cursor runs through the
  * candidates (grain by grain) instead of reading wstart for every
@@ -225,7 +358,7 @@ static inline void grain_done(struct fast *F, size_t i)
     if (d->use_wlist) {
         const uint32_t *wg = d->wgrain;
         while (F->q < F->nq && wg[F->q] == i) {
-            wall_one(F, i, d->wlist[F->q], fti);
+            wall_take(F, F->q, i, fti);
             F->q++;
         }
     } else {
@@ -267,11 +400,12 @@ int dem_forces_fast(struct dem *d, const double *x, const double *v,
             return rc;
     }
     double pf[3 * DEM_MAX_PATCHES] = {0};
+    struct wblk wb;
     struct fast F = {
         .d = d, .x = x, .v = v, .w = w, .fext = c->fext, .fd = c->fd,
         .acc = acc, .alpha = alpha, .ft6 = d->tbuf, .pf = pf, .tau = tau,
         .kick = d->kick, .commit = commit, .drag = drag,
-        .nq = d->use_wlist && n ? d->wstart[n] : 0,
+        .nq = d->use_wlist && n ? d->wstart[n] : 0, .wb = &wb,
     };
     const double *restrict r = d->r, *restrict inv_m = d->inv_m;
     const double *restrict pair_c = d->pair_c;
