@@ -46,11 +46,10 @@ int dem_forces_fast_ok(const struct dem *d, int nth)
 
 struct blk {
     /* gathered */
-    double dx[3][BLK], rs[BLK], chi[BLK], mstar[BLK];
+    double dx[3][BLK], d2[BLK], rs[BLK], chi[BLK], mstar[BLK];
     double dv[3][BLK], sw[3][BLK], h[3][BLK];
     /* evaluated: force on i, n x F^t, new spring, normal stiffness */
     double f[3][BLK], tc[3][BLK], hn[3][BLK], kn[BLK];
-    int on[BLK];
 };
 
 /* no-math-errno: sqrt of the negative overlap of a lane out of contact
@@ -133,12 +132,7 @@ static void blk_eval(struct blk *restrict b, int m, double tau,
     #pragma omp simd
     for (int k = 0; k < m; k++) {
         double dx = b->dx[0][k], dy = b->dx[1][k], dz = b->dx[2][k];
-        double d2 = 0;
-        d2 += dx * dx;
-        d2 += dy * dy;
-        d2 += dz * dz;
-        double rs = b->rs[k];
-        int on = !(d2 >= rs * rs);
+        double d2 = b->d2[k], rs = b->rs[k];
         double dist = sqrt(d2), inv = 1.0 / dist;
         double n0 = dx * inv, n1 = dy * inv, n2 = dz * inv;
         double delta = rs - dist;
@@ -153,11 +147,9 @@ static void blk_eval(struct blk *restrict b, int m, double tau,
         struct lane o = law_lane(n0, n1, n2, delta, vr0, vr1, vr2,
                                  b->chi[k], b->mstar[k], h0, h1, h2, tau,
                                  zeta2, tn, ratio_t, mu);
-        /* out of contact: the spring is cleared (left alone when zero) */
-        int nz = (h0 != 0) | (h1 != 0) | (h2 != 0);
-        b->hn[0][k] = on ? o.u[0] : (nz ? 0.0 : h0);
-        b->hn[1][k] = on ? o.u[1] : (nz ? 0.0 : h1);
-        b->hn[2][k] = on ? o.u[2] : (nz ? 0.0 : h2);
+        b->hn[0][k] = o.u[0];
+        b->hn[1][k] = o.u[1];
+        b->hn[2][k] = o.u[2];
         b->f[0][k] = o.f[0];
         b->f[1][k] = o.f[1];
         b->f[2][k] = o.f[2];
@@ -165,7 +157,6 @@ static void blk_eval(struct blk *restrict b, int m, double tau,
         b->tc[1][k] = o.tc[1];
         b->tc[2][k] = o.tc[2];
         b->kn[k] = o.kn;
-        b->on[k] = on;
     }
 }
 
@@ -416,45 +407,58 @@ int dem_forces_fast(struct dem *d, const double *x, const double *v,
                                          outside this function */
     size_t np = n ? start[n] : 0;
     struct blk b;
-    uint32_t bi[BLK];
+    uint32_t bi[BLK], bj[BLK];
+    size_t bp[BLK];
     long nc = 0;
     double om2 = 0;
     size_t row = 0;   /* rows below are done */
-    for (size_t p0 = 0; p0 < np; p0 += BLK) {
-        int m = np - p0 < BLK ? (int)(np - p0) : BLK;
-        /* gather */
-        size_t i = row;
-        for (int k = 0; k < m; k++) {
-            size_t p = p0 + (size_t)k;
+    size_t p = 0, i = 0;
+    while (p < np) {
+        /* gather the next BLK pairs in contact; a pair out of contact
+         * only has its spring cleared (pair_row) */
+        int m = 0;
+        for (; p < np && m < BLK; p++) {
             while (start[i + 1] <= p)
                 i++;
             size_t j = nlj[p];
-            bi[k] = (uint32_t)i;
+            double dx[3], d2 = 0;
             for (int a = 0; a < 3; a++) {
-                b.dx[a][k] = x[3 * j + a] - x[3 * i + a];
-                b.dv[a][k] = v[3 * i + a] - v[3 * j + a];
-                b.sw[a][k] = r[i] * w[3 * i + a] + r[j] * w[3 * j + a];
-                b.h[a][k] = hist[3 * p + a];
+                dx[a] = x[3 * j + a] - x[3 * i + a];
+                d2 += dx[a] * dx[a];
             }
-            b.rs[k] = r[i] + r[j];
-            b.chi[k] = pair_c[2 * p];
-            b.mstar[k] = pair_c[2 * p + 1];
+            double rs = r[i] + r[j];
+            double *h = &hist[3 * p];
+            if (d2 >= rs * rs) {
+                if (commit && (h[0] != 0 || h[1] != 0 || h[2] != 0))
+                    h[0] = h[1] = h[2] = 0;   /* the contact ended */
+                continue;
+            }
+            bi[m] = (uint32_t)i;
+            bj[m] = (uint32_t)j;
+            bp[m] = p;
+            for (int a = 0; a < 3; a++) {
+                b.dx[a][m] = dx[a];
+                b.dv[a][m] = v[3 * i + a] - v[3 * j + a];
+                b.sw[a][m] = r[i] * w[3 * i + a] + r[j] * w[3 * j + a];
+                b.h[a][m] = h[a];
+            }
+            b.d2[m] = d2;
+            b.rs[m] = rs;
+            b.chi[m] = pair_c[2 * p];
+            b.mstar[m] = pair_c[2 * p + 1];
+            m++;
         }
         blk_eval(&b, m, tau, &d->law.c);
         /* scatter in list order */
         for (int k = 0; k < m; k++) {
-            size_t p = p0 + (size_t)k;
-            i = bi[k];
-            while (row < i)
+            size_t ik = bi[k], j = bj[k];
+            while (row < ik)
                 grain_done(&F, row++);
             if (commit)
                 for (int a = 0; a < 3; a++)
-                    hist[3 * p + a] = b.hn[a][k];
-            if (!b.on[k])
-                continue;
-            size_t j = nlj[p];
-            double *fti = &ft6[6 * i], *ftj = &ft6[6 * j];
-            double ri = r[i], rj = r[j];
+                    hist[3 * bp[k] + a] = b.hn[a][k];
+            double *fti = &ft6[6 * ik], *ftj = &ft6[6 * j];
+            double ri = r[ik], rj = r[j];
             for (int a = 0; a < 3; a++) {   /* the moments as pair_row's,
                                                with mroll = 0 */
                 fti[a] += b.f[a][k];
@@ -463,7 +467,7 @@ int dem_forces_fast(struct dem *d, const double *x, const double *v,
                 ftj[3 + a] += rj * b.tc[a][k] - 0.0;
             }
             nc++;
-            double w2 = b.kn[k] * (inv_m[i] + inv_m[j]);
+            double w2 = b.kn[k] * (inv_m[ik] + inv_m[j]);
             om2 = w2 > om2 ? w2 : om2;
         }
     }
