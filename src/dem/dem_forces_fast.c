@@ -2,23 +2,31 @@
  * dem_forces_fast.c — the force evaluation of dem_forces (dem_forces.c)
  * on one thread for the fused default law (contact_fused.h) with the
  * springs taken from the stored histories: the Verlet hot path. It
- * computes exactly what the general path computes, operation for
- * operation and in the same order (same bits), but
- *   - the law is inlined and the row's loop carries no test for the
- *     ARKode state (spring_in, spring_rate, slip phases) nor for the
- *     generic law;
- *   - grain i's force and torque are summed in registers over its row
- *     (its pairs in list order, then its walls) on top of what rows
- *     i' < i left in the buffer, and stored once;
- *   - the buffer holds force and torque of a grain side by side
- *     (6 doubles), so a neighbour's update touches one cache line;
- *   - the half list only pairs i with j > i, so after row i nothing is
- *     added to grain i and nothing reads grain i again: its
+ * computes what the general path computes, operation for operation, and
+ * adds every contribution to a grain in the same order (pairs in list
+ * order, then walls in candidate order), so the results are the same to
+ * the bit (test/bench/bitIdentical.sh on tutorials/demSolid), but
+ *   - pairs in contact are collected in blocks of BLK (a scalar pass over
+ *     the list tests the overlap and clears the springs of ended
+ *     contacts), the law is evaluated on a block as vectors, and a scalar
+ *     pass adds the results in list order;
+ *   - wall candidates likewise, block by block as the grains reach them;
+ *   - force and torque of a grain sit side by side in the buffer (6
+ *     doubles), so a neighbour's update touches one cache line;
+ *   - the half list only pairs i with j > i, so once row i is added
+ *     nothing more is added to grain i nor read from it: its walls, its
  *     accelerations, the closing half kick (d->kick) and the clearing of
- *     its buffer entries are done right there, without a finish pass
- *     over all grains.
+ *     its buffer entries are done right then, without a finish pass over
+ *     all grains.
+ * Bits: sqrt, division and the arithmetic are correctly rounded lane by
+ * lane; no floating-point contraction is on (-std=c17 implies
+ * -ffp-contract=off; with FMA contraction the scalar and vector code
+ * could round differently); the law's branches become selects between
+ * values computed both ways. The file is compiled with -fno-math-errno
+ * -fno-trapping-math (Makefile), which only drop errno and exception
+ * flags, so that sqrt and the selects vectorise.
  * The multi-threaded path (per-thread buffers, reduction, finish) and the
- * ARKode paths stay in dem_forces.c.
+ * ARKode paths (springs as state, slip phases) stay in dem_forces.c.
  */
 #include <math.h>
 #include <string.h>
@@ -34,14 +42,8 @@ int dem_forces_fast_ok(const struct dem *d, int nth)
            && !d->slip_g && contact_law_is_fused(&d->law);
 }
 
-/* Pairs are evaluated in blocks of BLK consecutive list entries: a scalar
- * pass gathers what each pair needs, a second pass evaluates the law on
- * all of them as vectors (#pragma omp simd: sqrt, division and the
- * arithmetic are correctly rounded lane by lane, and no floating-point
- * contraction is on with -std=c17, so a lane computes the bits the scalar
- * law computes; the law's branches become selects of values computed
- * both ways), and a scalar pass adds the results in list order, finishing
- * each grain whose row is complete. */
+/* Pairs (and wall candidates) per block: 64 fill a few AVX registers
+ * many times over and keep a block in L1. */
 #define BLK 64
 
 struct blk {
@@ -51,10 +53,6 @@ struct blk {
     /* evaluated: force on i, n x F^t, new spring, normal stiffness */
     double f[3][BLK], tc[3][BLK], hn[3][BLK], kn[BLK];
 };
-
-/* no-math-errno: sqrt of the negative overlap of a lane out of contact
- * (discarded) would otherwise be a call that sets errno and no vector */
-
 
 /* The law (contact_eval_fused) on one lane: normal n, overlap delta,
  * relative velocity vr (with the rotation), chi, m*, spring h; out: the
