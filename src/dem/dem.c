@@ -31,7 +31,7 @@ void dem_free(struct dem *d)
     free(d->motions);
     nlist_free(&d->nl);
     free(d->hist); free(d->whist); free(d->pair_c); free(d->wall_chi);
-    free(d->wstart); free(d->wlist);
+    free(d->wstart); free(d->wlist); free(d->wgrain);
     free(d->old_start); free(d->old_j); free(d->old_h);
     free(d->tbuf);
     free(d->cpl.fd); free(d->cpl.fd_sum);
@@ -96,8 +96,10 @@ static int wall_candidates(struct dem *d)
             if (k == d->wlist_cap) {
                 size_t cap = d->wlist_cap ? 2 * d->wlist_cap : 1024;
                 SIM_GROW(d->wlist, cap);
+                SIM_GROW(d->wgrain, cap);
                 d->wlist_cap = cap;
             }
+            d->wgrain[k] = (uint32_t)i;
             d->wlist[k++] = w;
         }
         d->wstart[i + 1] = k;

@@ -88,6 +88,7 @@ struct dem {
     double *wall_chi;             /* per grain: chi of a wall contact       */
     size_t *wstart;               /* n + 1: walls near each grain (CSR), */
     int *wlist;                   /* built with the neighbour list        */
+    uint32_t *wgrain;             /* the grain of each wlist entry        */
     size_t wlist_cap;
     int use_wlist;                /* 1: only listed walls are checked; an
                                      integrator sets it when no grain can

@@ -30,6 +30,7 @@
 #include "core/error.h"
 #include "dem/contact/contact_fused.h"
 #include "dem/dem.h"
+#include "dem/dem_forces_fast.h"
 
 static inline void cross3(const double *a, const double *b, double *c)
 {
@@ -335,6 +336,8 @@ int dem_forces(struct dem *d, double tm, const double *x, const double *v,
     int nth = n_small(d) ? 1 : omp_get_max_threads();
     size_t n = d->n, stride = 6 * n + 3 * DEM_MAX_PATCHES;
     TRY(reserve_buffers(d, nth));
+    if (dem_forces_fast_ok(d, nth))   /* the Verlet hot path */
+        return dem_forces_fast(d, x, v, w, tau, commit, acc, alpha);
     long nc = 0, nwc = 0;
     double om2 = 0;
     int team = 1;

@@ -13,7 +13,7 @@
 #   mpsFluid/hydrostaticTank2D:0.05 mpsFluid/damBreak2D:0.02
 #   mpsFluid/damBreakObstacle:0.01 mpsDem/singleGrainSettling:0.02
 # A case whose Allrun uses runTandem runs coupled (mpsFluid + demSolid),
-# one whose Allrun runs demSolid runs demSolid alone.
+# one whose Allrun runs demSolid runs demSolid alone (tutorials/demSolid).
 #
 # Output, one line per case and field (cloud.field_component, summed over
 # every written file of that cloud):

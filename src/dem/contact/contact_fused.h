@@ -32,11 +32,11 @@ static inline int contact_law_is_fused(const struct contact_law *law)
            && (!law->twisting || law->twisting == &contact_twisting_none);
 }
 
-static inline void contact_eval_fused(const struct contact_law *law,
-                                      const struct contact_geom *g,
-                                      const double *h, double tau,
-                                      double *hnew,
-                                      struct contact_result *out)
+/* always inlined: a call per contact costs a sixth of the force loop */
+static inline __attribute__((always_inline)) void
+contact_eval_fused(const struct contact_law *law,
+                   const struct contact_geom *g, const double *h,
+                   double tau, double *hnew, struct contact_result *out)
 {
     const struct contact_coeffs *c = &law->c;
     double chi = g->chi;
