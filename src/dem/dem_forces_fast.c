@@ -122,6 +122,19 @@ law_lane(double n0, double n1, double n2, double delta, double vr0,
         return o;
 }
 
+/* Lane k of a block's results (the same layout in pair and wall blocks). */
+static inline __attribute__((always_inline)) void
+lane_store(struct lane o, int k, double (*f)[BLK], double (*tc)[BLK],
+           double (*hn)[BLK], double *kn)
+{
+    for (int a = 0; a < 3; a++) {
+        hn[a][k] = o.u[a];
+        f[a][k] = o.f[a];
+        tc[a][k] = o.tc[a];
+    }
+    kn[k] = o.kn;
+}
+
 static void blk_eval(struct blk *restrict b, int m, double tau,
                      const struct contact_coeffs *restrict c)
 {
@@ -145,16 +158,7 @@ static void blk_eval(struct blk *restrict b, int m, double tau,
         struct lane o = law_lane(n0, n1, n2, delta, vr0, vr1, vr2,
                                  b->chi[k], b->mstar[k], h0, h1, h2, tau,
                                  zeta2, tn, ratio_t, mu);
-        b->hn[0][k] = o.u[0];
-        b->hn[1][k] = o.u[1];
-        b->hn[2][k] = o.u[2];
-        b->f[0][k] = o.f[0];
-        b->f[1][k] = o.f[1];
-        b->f[2][k] = o.f[2];
-        b->tc[0][k] = o.tc[0];
-        b->tc[1][k] = o.tc[1];
-        b->tc[2][k] = o.tc[2];
-        b->kn[k] = o.kn;
+        lane_store(o, k, b->f, b->tc, b->hn, b->kn);
     }
 }
 
@@ -179,16 +183,7 @@ static void wblk_eval(struct wblk *restrict b, int m, double tau,
                                  b->vr[2][k], b->chi[k], b->mstar[k],
                                  b->h[0][k], b->h[1][k], b->h[2][k], tau,
                                  zeta2, tn, ratio_t, mu);
-        b->hn[0][k] = o.u[0];
-        b->hn[1][k] = o.u[1];
-        b->hn[2][k] = o.u[2];
-        b->f[0][k] = o.f[0];
-        b->f[1][k] = o.f[1];
-        b->f[2][k] = o.f[2];
-        b->tc[0][k] = o.tc[0];
-        b->tc[1][k] = o.tc[1];
-        b->tc[2][k] = o.tc[2];
-        b->kn[k] = o.kn;
+        lane_store(o, k, b->f, b->tc, b->hn, b->kn);
     }
 }
 

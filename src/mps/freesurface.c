@@ -40,6 +40,7 @@
 #include <math.h>
 
 #include "mps/mps.h"
+#include "particles/operators/operators.h"
 
 void mps_free_surface(struct mps_solver *s)
 {
@@ -60,18 +61,8 @@ void mps_free_surface(struct mps_solver *s)
             } else if (nd < S->beta) {
                 flag = MPS_SURFACE;
             } else if (nd < S->fs_n_max) {
-                double F[3] = { 0, 0, 0 };
-                const double *xi = P->x + 3 * i;
-                const int64_t k1 = neighbour_row_end(nl, i);
-                for (int64_t k = nl->start[i]; k < k1; k++) {
-                    int j = nl->j[k];
-                    double r = nl->r[k];
-                    if (w[k] == 0 || r == 0)
-                        continue;
-                    double f = w[k] * (ie ? ie[j] : 1.0) / r;
-                    for (int q = 0; q < 3; q++)
-                        F[q] += f * (P->x[3 * j + q] - xi[q]);
-                }
+                double F[3];
+                pop_surface_vector_row(nl, w, P->x, ie, i, F);
                 double mag = c * sqrt(F[0] * F[0] + F[1] * F[1] + F[2] * F[2]);
                 if (mag > S->alpha * f0)
                     flag = MPS_SURFACE;

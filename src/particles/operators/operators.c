@@ -205,6 +205,24 @@ void pop_laplacian(const struct neighbour_list *nl, const double *w,
     }
 }
 
+void pop_surface_vector_row(const struct neighbour_list *nl, const double *w,
+                            const double *x, const double *inv_eps, int i,
+                            double F[3])
+{
+    const double *xi = x + 3 * i;
+    const int64_t k1 = neighbour_row_end(nl, i);
+    F[0] = F[1] = F[2] = 0;
+    for (int64_t k = nl->start[i]; k < k1; k++) {
+        int j = nl->j[k];
+        double r = nl->r[k];
+        if (w[k] == 0 || r == 0)
+            continue;
+        double f = w[k] * IEPS(j) / r;
+        for (int q = 0; q < 3; q++)
+            F[q] += f * (x[3 * j + q] - xi[q]);
+    }
+}
+
 void pop_surface_vector(const struct neighbour_list *nl, const double *w,
                         double c, const double *x, const double *inv_eps,
                         const uint8_t *rows, double *out)
@@ -213,18 +231,8 @@ void pop_surface_vector(const struct neighbour_list *nl, const double *w,
     for (int i = 0; i < nl->n; i++) {
         if (rows && !rows[i])
             continue;
-        double F[3] = { 0, 0, 0 };
-        const double *xi = x + 3 * i;
-        const int64_t k1 = neighbour_row_end(nl, i);
-        for (int64_t k = nl->start[i]; k < k1; k++) {
-            int j = nl->j[k];
-            double r = nl->r[k];
-            if (w[k] == 0 || r == 0)
-                continue;
-            double f = w[k] * IEPS(j) / r;
-            for (int q = 0; q < 3; q++)
-                F[q] += f * (x[3 * j + q] - xi[q]);
-        }
+        double F[3];
+        pop_surface_vector_row(nl, w, x, inv_eps, i, F);
         for (int q = 0; q < 3; q++)
             out[3 * i + q] = c * F[q];
     }

@@ -81,7 +81,11 @@ void pop_laplacian(const struct neighbour_list *nl, const double *w,
                    const double *inv_eps, const uint8_t *rows, double *out);
 
 /* F_i = c sum_j r_ij / |r_ij| w_ij / eps_j  (eq. 15 with c = d/n0),
- * 3 per particle. */
+ * 3 per particle; pop_surface_vector_row: the sum of row i alone,
+ * unscaled (c = 1), for a caller that needs it for a few particles. */
+void pop_surface_vector_row(const struct neighbour_list *nl, const double *w,
+                            const double *x, const double *inv_eps, int i,
+                            double F[3]);
 void pop_surface_vector(const struct neighbour_list *nl, const double *w,
                         double c, const double *x, const double *inv_eps,
                         const uint8_t *rows, double *out);
