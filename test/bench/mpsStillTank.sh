@@ -11,8 +11,8 @@
 # current directory. One thread (OMP_NUM_THREADS=1); about 1 s of wall time
 # per 1000 steps on a quiet machine. KEEP=DIR keeps the case in DIR.
 # SET='system/mpsSchemes:shifting=none system/mpsSchemes:sourceMix=0.01'
-# changes entries of the copied case first (bin/dictTool -set), to compare
-# variants of the scheme.
+# changes or adds entries of the copied case first (bin/dictTool -new -set),
+# to compare variants of the scheme.
 ROOT="$(cd "$(dirname "$0")/../.." && pwd)"
 STEPS=${1:-100000}
 SNAP=${2:-50}
@@ -22,7 +22,7 @@ c=${KEEP:-$(mktemp -d)/case}
 rm -rf "$c"; cp -r "$ROOT/tutorials/mpsFluid/hydrostaticTank2D" "$c"
 (cd "$c" && ./Allclean > /dev/null 2>&1)
 for kv in ${SET:-}; do
-    "$ROOT/bin/dictTool" "$c/${kv%%:*}" -set "${kv#*:}" > /dev/null || exit 1
+    "$ROOT/bin/dictTool" "$c/${kv%%:*}" -new -set "${kv#*:}" > /dev/null || exit 1
 done
 dt=$(sed 's|//.*||' "$c/system/controlDict" | awk '/^deltaT/ { gsub(";", "", $2); print $2 }')
 end=$(awk -v n=$STEPS -v dt=$dt 'BEGIN { printf "%.10g", n * dt }')
