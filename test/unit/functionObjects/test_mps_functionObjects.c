@@ -347,6 +347,52 @@ static void test_probes(void **state)
     cloud_free(&c);
 }
 
+/* field U: Shepard average of the fluid velocity only. Fluid particles
+ * carry u = (2 y, -x, 0), walls and dummies 99 in x. */
+static void test_probes_velocity(void **state)
+{
+    (void)state;
+    struct cloud c;
+    struct fo_scene s;
+    build_tank(&c);
+    for (size_t i = 0; i < c.n; i++) {
+        const double *x = c.x + 3 * i;
+        c.u[3 * i] = c.type[i] == 0 ? 2 * x[1] : 99;
+        c.u[3 * i + 1] = c.type[i] == 0 ? -x[0] : 0;
+    }
+    make_scene(&s, &c);
+    char text[1024];
+    snprintf(text, sizeof text,
+             "functions {\n"
+             "  v { type probes; field U; probeLocations ((%.17g %.17g) "
+             "(%.17g %.17g) (%.17g %.17g) (1 1)); }\n"
+             "}\n",
+             5 * DP, 8 * DP, 1 * DP, 8 * DP, 5.3 * DP, 8 * DP);
+    long warn0 = log_warning_count();
+    run(text, &s, &c, 2, NULL);
+    assert_int_equal(log_warning_count() - warn0, 1); /* the dry probe */
+    char cols[256];
+    double v[16];
+    int rows;
+    assert_int_equal(read_output("v", "probes", cols, sizeof cols, v, 16,
+                                 &rows), 13);
+    assert_string_equal(cols, "# time Ux0 Uy0 Uz0 Ux1 Uy1 Uz1 Ux2 Uy2 Uz2 "
+                              "Ux3 Uy3 Uz3\n");
+    /* Symmetric reach about the point: a linear field is exact. */
+    assert_close(v[1], 2 * 8 * DP, 1e-14);
+    assert_close(v[2], -5 * DP, 1e-14);
+    assert_close(v[3], 0, 0);
+    /* Beside the left wall: the wall's 99 is not averaged in, and the
+     * fluid in reach is symmetric in y (x is one-sided). */
+    assert_close(v[4], 2 * 8 * DP, 1e-14);
+    assert_true(v[5] < -DP && v[5] > -3.1 * DP);
+    /* Asymmetric in x: u_x = 2 y still exact, u_y within |grad| R. */
+    assert_close(v[7], 2 * 8 * DP, 1e-14);
+    assert_close(v[8], -5.3 * DP, 2.1 * DP);
+    assert_true(isnan(v[10]) && isnan(v[11]) && isnan(v[12]));
+    cloud_free(&c);
+}
+
 /* ---- wave gauges ------------------------------------------------------- */
 
 static void test_wave_gauges(void **state)
@@ -636,6 +682,9 @@ static const struct bad_case bad[] = {
     {2, "a { type forces; patches (); }", "at least one"},
     {2, "a { type forces; }", "patches"},
     {2, "a { type probes; }", "probeLocations"},
+    {2, "a { type probes; probeLocations ((0 0)); field T; }", "valid: p U"},
+    {2, "a { type probes; probeLocations ((0 0)); field U; "
+        "interpolation nearestWall; }", "nearestWall"},
     {2, "a { type probes; probeLocations ((1 2 3 4)); }",
      "point 0 must be a list of 2 to 3 numbers"},
     {3, "a { type probes; probeLocations ((1 2 3) (1 2)); }",
@@ -747,6 +796,7 @@ int main(void)
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_table),
         cmocka_unit_test(test_probes),
+        cmocka_unit_test(test_probes_velocity),
         cmocka_unit_test(test_wave_gauges),
         cmocka_unit_test(test_front),
         cmocka_unit_test(test_forces),
