@@ -3,13 +3,16 @@
  * of Figs. 11, 13 and 21 of Xie et al. 2025):
  *
  *     X(t) = max { (x_i - o) . e : i fluid, n_i/n0 >= minNumberDensity,
- *                                  z_i - z_o <= maxHeight }
+ *                                  minHeight <= z_i - z_o <= maxHeight }
  *
  * with e = direction/|direction|, o = origin and z the vertical coordinate
  * (y in 2-D). The number-density threshold ignores isolated splash ahead
  * of the front; maxHeight (none by default) keeps only the fluid near the
  * floor, the surge that Martin and Moyce tracked, not a jet thrown forward
- * above it. X is the centre of
+ * above it; minHeight (none by default) skips a thin layer of water lying
+ * ahead of the surge, so that the bore on a wet bed is what is tracked
+ * (the Yeh & Petroff column case: a 0.01 m bed, the bore 0.08 m deep).
+ * X is the centre of
  * the leading particle: the edge of the volume it represents lies dp/2
  * further (a column of width a filled with particles reads X = a - dp/2).
  *
@@ -29,6 +32,7 @@
  *   origin           (0 0 0);   // o [m]
  *   minNumberDensity 0.5;       // n/n0 threshold
  *   maxHeight        0.02;      // [m] above o, optional (default: none)
+ *   minHeight        0.03;      // [m] above o, optional (default: none)
  *   referenceLength  0.057;     // a [m], optional: adds the column Z
  *   gravity          9.81;      // |g| [m/s^2], optional (with
  *                               // referenceLength): adds the column T
@@ -50,7 +54,7 @@ struct front {
     char *name;
     double e[3], o[3];
     double nd_min;
-    double zmax;    /* maxHeight, or INFINITY */
+    double zmin, zmax; /* minHeight, maxHeight, or -/+INFINITY */
     double a, g;    /* 0 when not given */
     int warned;
 };
@@ -94,6 +98,11 @@ static int read_scales(const struct dict *d, struct front *fr)
     if (!(fr->zmax > 0))
         return dict_error(d, "maxHeight", SIM_ERR_DICT, "maxHeight (above "
                           "the origin) must be positive, got %g", fr->zmax);
+    TRY(dict_get_scalar_or(d, "minHeight", -INFINITY, &fr->zmin));
+    if (!(fr->zmin < fr->zmax) || isnan(fr->zmin))
+        return dict_error(d, "minHeight", SIM_ERR_DICT, "minHeight (above "
+                          "the origin) must be below maxHeight (%g), got %g",
+                          fr->zmax, fr->zmin);
     if (dict_has(d, "referenceLength")) {
         TRY(dict_get_scalar(d, "referenceLength", &fr->a));
         if (!(fr->a > 0) || !isfinite(fr->a))
@@ -146,6 +155,9 @@ static int header(void *data, const struct fo_scene *s, FILE *f)
     if (isfinite(fr->zmax))
         fprintf(f, "# only particles at most %.9g m above the origin\n",
                 fr->zmax);
+    if (isfinite(fr->zmin))
+        fprintf(f, "# only particles at least %.9g m above the origin\n",
+                fr->zmin);
     if (fr->a > 0)
         fprintf(f, "# Z = X/a with a = %.9g m\n", fr->a);
     if (fr->g > 0)
@@ -166,7 +178,7 @@ static double leading_edge(const struct mps_fo_fields *f, int dim,
         if (f->type[i] != 0 || !(f->nd[i] >= fr->nd_min))
             continue;
         const double *x = f->x + 3 * i;
-        if (x[z] - fr->o[z] > fr->zmax)
+        if (x[z] - fr->o[z] > fr->zmax || x[z] - fr->o[z] < fr->zmin)
             continue;
         double v = (x[0] - fr->o[0]) * fr->e[0] + (x[1] - fr->o[1]) * fr->e[1]
                    + (x[2] - fr->o[2]) * fr->e[2];

@@ -459,7 +459,8 @@ static void test_front(void **state)
              "  f6 { type front; minNumberDensity 0.05; maxHeight %.17g; }\n"
              "  f7 { type front; minNumberDensity 0.05; maxHeight %.17g; }\n"
              "  f8 { type front; direction (0 1 0); maxHeight %.17g; }\n"
-             "}\n", DP, 14.5 * DP, 15 * DP, (H + 0.5) * DP);
+             "  f9 { type front; minHeight %.17g; }\n"
+             "}\n", DP, 14.5 * DP, 15 * DP, (H + 0.5) * DP, (H + 0.5) * DP);
     run(text, &s, &c, 3, renumber_last);
     char cols[256];
     double v[8];
@@ -493,6 +494,9 @@ static void test_front(void **state)
     assert_int_equal(read_output("f8", "front", cols, sizeof cols, v, 8,
                                  &rows), 2);
     assert_close(v[1], H * DP, tol);             /* bump cut off         */
+    assert_int_equal(read_output("f9", "front", cols, sizeof cols, v, 8,
+                                 &rows), 2);
+    assert_close(v[1], 7 * DP, tol);             /* only the bump        */
     cloud_free(&c);
 }
 
@@ -714,6 +718,7 @@ static const struct bad_case bad[] = {
     {2, "a { type front; referenceLength 0; }", "positive"},
     {2, "a { type front; maxHeight 0; }", "maxHeight"},
     {2, "a { type front; maxHeight -0.1; }", "maxHeight"},
+    {2, "a { type front; maxHeight 0.1; minHeight 0.1; }", "minHeight"},
 };
 
 static void test_errors(void **state)
