@@ -22,13 +22,11 @@
  * w < 2/lambda_max(D^-1 A) <= 2 by Gershgorin, a < 2). BiCGSTAB (the
  * non-symmetric PPE of Model B, 1/eps_j weights) needs only a fixed linear
  * operator and gets no pre-smoothing: rc = P^T r, one fine SpMV per cycle
- * instead of two (20 % less time on the porous lattice below).
+ * instead of two (20 % less time on the porous lattice, doc/libraries.md
+ * §2).
  *
- * Measured (ppeBench, r_e 3.1, tolerance 1e-8, iterations from zero / warm
- * step): 40^3 porous lattice, BiCGSTAB 10 / 8 against Jacobi's 93 / 78;
- * 60^3, 11 / 8; symmetric 40^3, PCG 12 / 9 against 114 / 111. The W-cycle
- * took 10 instead of the V-cycle's 15, at 10 % more per iteration; a = 1.5
- * to 1.8 are equally good, 1.0 needs 20 % more iterations.
+ * The W-cycle and the over-correction a were chosen on ppeBench; the
+ * iteration counts are in doc/libraries.md §2 ("The aggregation AMG").
  *
  * Why it pays on the PPE: Jacobi needs iterations in proportion to the
  * number of particles across the water (~1/dp); the coarse levels remove
