@@ -264,16 +264,17 @@ int store_require(const struct store *s, const char *who, const char *name,
     return SIM_OK;
 }
 
-void store_cloud(struct store *s, double time, struct vtu_cloud *c)
+void store_cloud(const struct store *s, double time, struct vtu_field *out,
+                 struct vtu_cloud *c)
 {
-    *c = (struct vtu_cloud){ .n = s->n, .fields = s->out, .time = time };
+    *c = (struct vtu_cloud){ .n = s->n, .fields = out, .time = time };
     for (int k = 0; k < s->nfields; k++) {
         const struct store_field *f = &s->f[k];
         if (f->flags & STORE_POINTS)
             c->points = *f->ref;
         if (!(f->flags & STORE_WRITE))
             continue;
-        struct vtu_field *o = &s->out[c->nfields++];
+        struct vtu_field *o = &out[c->nfields++];
         snprintf(o->name, sizeof o->name, "%s", f->name);
         o->type = f->type;
         o->ncomp = f->ncomp;

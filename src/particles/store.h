@@ -64,7 +64,6 @@ struct store {
     size_t scratch_bytes;
     int32_t *inv;                 /* old index -> new, for STORE_INDEX   */
     size_t inv_cap;
-    struct vtu_field out[STORE_MAX_FIELDS]; /* store_cloud's view        */
 };
 
 /* An empty store (n = cap = 0); category names its fields in errors. */
@@ -111,8 +110,10 @@ int store_require(const struct store *s, const char *who, const char *name,
                   int type, int ncomp, const void **data);
 
 /* The cloud to write: n, the STORE_POINTS field as points, the STORE_WRITE
- * fields in registration order; borrowed, valid until the store changes. */
-void store_cloud(struct store *s, double time, struct vtu_cloud *c);
+ * fields in registration order, described in out (room for
+ * STORE_MAX_FIELDS); borrowed, valid until the store changes. */
+void store_cloud(const struct store *s, double time, struct vtu_field *out,
+                 struct vtu_cloud *c);
 
 /* Views of a cloud's points ("position") and fields, so that a cloud read
  * from a file (or made by a test) can be looked up like a solver's. The

@@ -168,13 +168,15 @@ static void test_moved_and_views(void **state)
                                STORE_VIEW | STORE_WRITE, &view), SIM_OK);
     assert_ptr_equal(view, eps);
     struct vtu_cloud cl;
-    store_cloud(&b.st, 1.5, &cl);
+    struct vtu_field out[STORE_MAX_FIELDS];
+    store_cloud(&b.st, 1.5, out, &cl);
     assert_int_equal(cl.n, 5000);
     assert_ptr_equal(cl.points, b.x);
     assert_true(cl.time == 1.5);
     const char *names[] = { "velocity", "pressure", "id", "flag",
                             "porosity" };
     assert_int_equal(cl.nfields, 5);
+    assert_ptr_equal(cl.fields, out);
     for (int k = 0; k < 5; k++)
         assert_string_equal(cl.fields[k].name, names[k]);
     assert_ptr_equal(cl.fields[4].data, eps);
