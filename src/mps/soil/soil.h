@@ -15,6 +15,8 @@
 
 #include <stdint.h>
 
+struct dict;
+struct model_head;
 struct neighbour_list;
 
 /* The role of a particle in the soil forces. */
@@ -74,5 +76,27 @@ void soil_drag(const struct soil_drag_params *p,
                const struct neighbour_list *nl, const double *w,
                const double *v, const uint8_t *role, double *F,
                double *a_fluid, double *S);
+
+/* constant/soilProperties (doc/theory.md K0-01 ... K0-09). */
+enum soil_model { SOIL_MODEL_SOLID, SOIL_MODEL_LIQUID };
+
+struct soil_props {
+    int model;              /* enum soil_model                               */
+    double rho;             /* soil density [kg/m^3]                         */
+    double mu;              /* friction coefficient [-] (solid)              */
+    double column_half_width; /* b of eq. (13) [l0] (solid)                  */
+    int kernel_weight;      /* frictionWeight none | kernel (solid)          */
+    int cap;                /* frictionCap (solid)                           */
+    double cd;              /* dragCoefficient C_D [-] (solid)               */
+    int drag_reaction;      /* dragReaction (solid)                          */
+    double nu;              /* kinematic viscosity [m^2/s] (liquid)          */
+};
+
+/* The model and option tables, for the solver's -listModels list. */
+extern const struct model_head *const soil_model_table[];
+extern const struct model_head *const soil_friction_weight_table[];
+
+/* Read d (constant/soilProperties) into p; errors name the entry. */
+int soil_props_read(const struct dict *d, struct soil_props *p);
 
 #endif

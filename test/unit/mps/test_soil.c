@@ -13,6 +13,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "core/dict.h"
 #include "core/error.h"
 #include "mps/kernel/kernel.h"
 #include "mps/operators.h"
@@ -255,6 +256,47 @@ static void test_drag_momentum(void **s)
     neighbour_free(&nl);
 }
 
+/* constant/soilProperties: the defaults of doc/theory.md K0-03 ... K0-09,
+ * and bad entries refused with the file, line and key (unknown names with
+ * the valid ones and the nearest). */
+static int props(const char *text, struct soil_props *p)
+{
+    struct dict *d;
+    assert_int_equal(dict_read_string(text, strlen(text), "constant/soilProperties", &d), SIM_OK);
+    int rc = soil_props_read(d, p);
+    dict_free(d);
+    return rc;
+}
+
+static void test_props(void **s)
+{
+    (void)s;
+    struct soil_props p;
+    assert_int_equal(props("rho 1900;\n", &p), SIM_OK);
+    assert_int_equal(p.model, SOIL_MODEL_SOLID);
+    assert_true(p.rho == 1900 && p.mu == 0.577 && p.column_half_width == 0.5);
+    assert_true(p.kernel_weight == 0 && p.cap == 0 && p.cd == 1.0 && p.drag_reaction == 1);
+    assert_true(p.nu == 1e-3);
+    assert_int_equal(props("model liquid; rho 900; nu 2e-3; frictionWeight kernel;\n", &p), SIM_OK);
+    assert_true(p.model == SOIL_MODEL_LIQUID && p.rho == 900 && p.nu == 2e-3 && p.kernel_weight == 1);
+    static const struct { const char *text, *msg; } bad[] = {
+        { "model soild; rho 1900;\n", "did you mean 'solid'" },
+        { "rho 1900;\nmu -0.1;\n", "constant/soilProperties:2" },
+        { "rho 0;\n", "rho = 0 is out of range" },
+        { "mu 0.5;\n", "rho" },
+        { "rho 1900; frictionWeight kernal;\n", "valid: none kernel" },
+        { "rho 1900;\n\ncolumnHalfWidth 0;\n", "constant/soilProperties:3" },
+    };
+    for (size_t k = 0; k < sizeof bad / sizeof *bad; k++) {
+        assert_int_not_equal(props(bad[k].text, &p), SIM_OK);
+        if (!strstr(sim_error_message(), bad[k].msg)) {
+            print_error("'%s': message '%s' lacks '%s'\n", bad[k].text, sim_error_message(), bad[k].msg);
+            fail();
+        }
+        sim_error_clear();
+    }
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -263,6 +305,7 @@ int main(void)
         cmocka_unit_test(test_friction_wall),
         cmocka_unit_test(test_drag_stream),
         cmocka_unit_test(test_drag_momentum),
+        cmocka_unit_test(test_props),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
