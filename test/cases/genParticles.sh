@@ -167,6 +167,34 @@ expect counts_2d_grains "$(counts c2 0/dem.vtu group)" "group 2:86"
 near pressure_2d_max "$(field_range c2 0/fluid.vtu pressure 0 | cut -d' ' -f2)" 931.95 1e-9
 expect z_2d "$(field_range c2 0/dem.vtu velocity 2) $("$INFO" -case "$TMP/c2" 0/fluid.vtu | awk '$1 == "bounds" { print $4, $7 }')" "0 0 0 0"
 
+# ---- a soil region (doc/theory.md K): phase 1 for its particles, and a
+# saturated layer under water: p = rho_s g (top - y) + rho g (h_w - top)
+newcase soil
+cat > "$TMP/soil/system/particleDict" <<'DICT'
+dimension 2;
+dp 0.01;
+wallLayers auto;
+kernelRadius 2.1;
+regions
+(
+    tank  { shape box; min (0 0 0); max (0.1 0.2 0); type tankWall; open (ymax); }
+    bed   { shape box; min (0 0 0); max (0.1 0.05 0); type soil; hydrostaticPressure yes; surfaceHeight 0.1; }
+    water { shape box; min (0 0.05 0); max (0.1 0.1 0); type fluid; hydrostaticPressure yes; }
+);
+DICT
+sed -i 's/(0 0 -9.81)/(0 -9.81 0)/' "$TMP/soil/constant/g"
+printf 'rho 1900; // [kg/m^3]\n' > "$TMP/soil/constant/soilProperties"
+if run soil; then pass run_soil; else fail run_soil "$(grep -A1 FATAL "$TMP/soil.log" | tail -1)"; fi
+# 50 water + (16)(23) - 200 = 168 wall and dummy; 50 soil
+expect counts_soil_phase "$(counts soil 0/fluid.vtu phase)" "phase 0:218 1:50"
+# lowest soil row: 1900 * 9.81 * (0.05 - 0.005) + 1000 * 9.81 * (0.1 - 0.05)
+near pressure_soil_max "$(field_range soil 0/fluid.vtu pressure 0 | cut -d' ' -f2)" 1329.255 1e-9
+# without soil regions the file has no phase field (c2 above)
+expect no_phase_without_soil "$("$INFO" -case "$TMP/c2" 0/fluid.vtu | grep -c '^field phase')" 0
+rm "$TMP/soil/constant/soilProperties"
+if ! run soil && grep -q "constant/soilProperties" "$TMP/soil.log"
+then pass soil_density_missing; else fail soil_density_missing "a hydrostatic soil region without constant/soilProperties was not refused"; fi
+
 # ---- curved shapes: a sphere of grains and a cylinder obstacle, counted
 # against an independent enumeration of the lattice sites
 newcase curved 's/^    block/    pillar { shape cylinder; point1 (0.1 0.05 0); point2 (0.1 0.05 0.12); radius 0.02; type wall; }\n    block/' \
@@ -234,6 +262,7 @@ expect slope_pillar_2d "$got" "$want"
 newcase ref
 sed 's/^dp           0.0027;/dp 0.005;/' "$ROOT/applications/utilities/genParticles/particleDict.reference" \
     > "$TMP/ref/system/particleDict"
+printf 'rho 1900; // [kg/m^3] the soil region of the reference\n' > "$TMP/ref/constant/soilProperties"
 if run ref && grep -q "^MPS particles: .*grains: 7425$" "$TMP/ref.log"; then pass reference_dict
 else fail reference_dict "particleDict.reference does not run: $(grep -A1 FATAL "$TMP/ref.log" | tail -1)"; fi
 

@@ -86,8 +86,11 @@ static int read_physics(const struct app *a, struct gen_case *c)
     char where[256];
     int any = 0, rc;
 
-    for (int i = 0; i < c->nregions; i++)
+    int soil = 0;
+    for (int i = 0; i < c->nregions; i++) {
         any |= c->r[i].hydrostatic;
+        soil |= c->r[i].hydrostatic && c->r[i].type == REGION_SOIL;
+    }
     if (!any)
         return SIM_OK;
     TRY(app_read_dict(a, "constant/transportProperties", &tp));
@@ -96,6 +99,14 @@ static int read_physics(const struct app *a, struct gen_case *c)
         rc = dict_error(tp, "rho", SIM_ERR_DICT, "rho must be positive");
     dict_free(tp);
     TRY(rc);
+    if (soil) { /* the soil's density, for its hydrostatic pressure */
+        TRY(app_read_dict(a, "constant/soilProperties", &tp));
+        rc = dict_get_scalar_dim(tp, "rho", dims_rho, &c->rho_soil);
+        if (rc == SIM_OK && !(c->rho_soil > 0))
+            rc = dict_error(tp, "rho", SIM_ERR_DICT, "rho must be positive");
+        dict_free(tp);
+        TRY(rc);
+    }
     rc = gravity_case(a, c->dim, c->g, &gd);
     if (rc != SIM_OK || !gd) { /* the default points along -vertical */
         dict_free(gd);
@@ -202,13 +213,16 @@ static int write_fluid(const struct gen_case *c, const struct mps_cloud *m,
         { "pressure", VTU_FLOAT64, 1, m->p },
         { "normal", VTU_FLOAT64, 3, m->normal },
         { "volumeFraction", VTU_FLOAT64, 1, m->phi },
+        { "phase", VTU_INT32, 1, m->phase },
         { "id", VTU_INT64, 1, NULL },
     };
-    if (!m->phi) { /* no grainVolume scale: no field */
-        f[5] = f[6];
-        return write_with_ids(c, m->n, m->x, f, 6, path);
-    }
-    return write_with_ids(c, m->n, m->x, f, 7, path);
+    /* optional fields only where the case has them, so that a case
+     * without grains or soil writes the file it always wrote */
+    int nf = 0;
+    for (size_t k = 0; k < sizeof f / sizeof *f; k++)
+        if (f[k].data || !strcmp(f[k].name, "id"))
+            f[nf++] = f[k];
+    return write_with_ids(c, m->n, m->x, f, nf, path);
 }
 
 static int write_dem(const struct gen_case *c, const struct dem_cloud *m,

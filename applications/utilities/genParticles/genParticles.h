@@ -18,7 +18,8 @@ struct app;
 struct dict;
 struct grain_format_ops;
 
-enum region_type { REGION_TANK_WALL, REGION_WALL, REGION_FLUID, REGION_GRAINS };
+enum region_type { REGION_TANK_WALL, REGION_WALL, REGION_FLUID, REGION_GRAINS,
+                   REGION_SOIL };
 extern const char *const region_type_names[]; /* NULL terminated */
 
 /* Shape words of a region: geom_shape_names, then "file" (grains read
@@ -83,6 +84,7 @@ struct gen_case {
     struct region *r;
     double lo[3], hi[3];    /* box the MPS lattice is scanned over       */
     double rho, g[3];       /* only when a region asks for hydrostatics  */
+    double rho_soil;        /* constant/soilProperties rho: only then    */
 };
 
 /* The MPS cloud (fluid, wall and dummy particles), structure of arrays. */
@@ -92,6 +94,8 @@ struct mps_cloud {
     int32_t *type, *patch, *region;
     double *phi;            /* NULL, or the fluid volume fraction of each
                                particle (grainVolume scale)              */
+    int32_t *phase;         /* NULL without soil regions, else 1 for the
+                               particles of a soil region, 0 for others */
 };
 
 struct dem_cloud {

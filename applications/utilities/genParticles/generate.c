@@ -104,6 +104,7 @@ static int classify(const struct gen_case *c, const double x[3], int *type,
         case REGION_GRAINS:
             continue;
         case REGION_FLUID:
+        case REGION_SOIL:
             if (geom_distance(&r->g, x) >= -tol)
                 continue;
             if (!in_a_tank(c, x, &any) && any)
@@ -189,9 +190,15 @@ int gen_check_memory(const struct gen_case *c)
     return SIM_OK;
 }
 
-static int alloc_mps(struct mps_cloud *m)
+static int alloc_mps(const struct gen_case *c, struct mps_cloud *m)
 {
     size_t n = m->n ? m->n : 1;
+    for (int i = 0; i < c->nregions; i++)
+        if (c->r[i].type == REGION_SOIL && !m->phase) {
+            m->phase = sim_calloc(n, sizeof *m->phase);
+            if (!m->phase)
+                return SIM_ERR_NOMEM;
+        }
     m->u = sim_calloc(3 * n, sizeof *m->u);
     m->normal = sim_calloc(3 * n, sizeof *m->normal);
     m->p = sim_calloc(n, sizeof *m->p);
@@ -214,6 +221,8 @@ static void fill_mps_fields(const struct gen_case *c, struct mps_cloud *m)
         m->type[k] = type;
         m->region[k] = i;
         m->patch[k] = type == TYPE_FLUID ? -1 : i;
+        if (m->phase)
+            m->phase[k] = type == TYPE_FLUID && r->type == REGION_SOIL;
         memcpy(m->u + 3 * k, r->velocity, sizeof r->velocity);
         if (type != TYPE_FLUID) {
             double *n = m->normal + 3 * k;
@@ -266,7 +275,7 @@ static int jitter_fluid(const struct gen_case *c, struct mps_cloud *m)
 {
     for (int i = 0; i < c->nregions; i++) {
         const struct region *r = &c->r[i];
-        if (r->type != REGION_FLUID || !(r->jitter > 0))
+        if ((r->type != REGION_FLUID && r->type != REGION_SOIL) || !(r->jitter > 0))
             continue;
         size_t n = 0;
         double *x = sim_calloc(3 * (r->count[TYPE_FLUID] + 1), sizeof *x);
@@ -298,7 +307,7 @@ int gen_mps(struct gen_case *c, struct mps_cloud *m)
         return SIM_OK;
     claim_boxes(c);
     TRY(lattice_fill(&l, c->lo, c->hi, accept_site, c, &m->x, &m->n));
-    TRY(alloc_mps(m));
+    TRY(alloc_mps(c, m));
     fill_mps_fields(c, m);
     for (int i = 0; i < c->nregions; i++)
         c->r[i].top = -HUGE_VAL;
@@ -420,7 +429,10 @@ int gen_dem(struct gen_case *c, struct dem_cloud *m)
 }
 
 /* p = rho |g| (h - z) for the fluid of regions that ask for it, with h the
- * region's surfaceHeight or the top of its particles. */
+ * region's surfaceHeight or the top of its particles. A soil region is
+ * saturated soil under water up to its surfaceHeight h_w (doc/theory.md
+ * E5-02): p = rho_soil |g| (top - z) + rho |g| (h_w - top), top the top of
+ * its particles, the second term only when h_w > top. */
 int gen_hydrostatic(struct gen_case *c, struct mps_cloud *m)
 {
     double gv = c->g[c->vertical];
@@ -429,8 +441,14 @@ int gen_hydrostatic(struct gen_case *c, struct mps_cloud *m)
         const struct region *r = &c->r[m->region[k]];
         if (m->type[k] != TYPE_FLUID || !r->hydrostatic)
             continue;
+        double z = m->x[3 * k + c->vertical];
+        if (r->type == REGION_SOIL) {
+            double water = r->has_surface ? fmax(r->surface - r->top, 0) : 0;
+            m->p[k] = -gv * (c->rho_soil * (r->top - z) + c->rho * water);
+            continue;
+        }
         double h = r->has_surface ? r->surface : r->top;
-        m->p[k] = -c->rho * gv * (h - m->x[3 * k + c->vertical]);
+        m->p[k] = -c->rho * gv * (h - z);
     }
     return SIM_OK;
 }
@@ -445,6 +463,7 @@ void mps_cloud_free(struct mps_cloud *m)
     free(m->patch);
     free(m->region);
     free(m->phi);
+    free(m->phase);
     memset(m, 0, sizeof *m);
 }
 

@@ -15,7 +15,7 @@
 #include "particles/motion/motion.h"
 
 const char *const region_type_names[] = { "tankWall", "wall", "fluid",
-                                          "grains", NULL };
+                                          "grains", "soil", NULL };
 const char *const region_shape_names[] = { "box", "cylinder", "sphere",
                                            "plane", "file", NULL };
 /* the lattice kinds, then random (randomPack.c) */
@@ -195,6 +195,7 @@ static int read_region(const struct gen_case *c, struct region *r)
         TRY(read_open(c, r));
         break;
     case REGION_FLUID:
+    case REGION_SOIL:
         TRY(dict_get_bool_or(d, "hydrostaticPressure", 0, &r->hydrostatic));
         /* the lattice fraction dp/4 keeps particles at least dp/2 apart
          * and inside the walls (the first site is dp/2 from a wall) */

@@ -29,6 +29,7 @@ struct mps_kernel_ops {
 
 extern const struct mps_kernel_ops mps_kernel_zhang2014;
 extern const struct mps_kernel_ops mps_kernel_koshizuka1996;
+extern const struct mps_kernel_ops mps_kernel_poly6;
 
 /* Every kernel; NULL-terminated (kernel_register.c is the only list). */
 extern const struct mps_kernel_ops *const mps_kernel_table[];

@@ -6,5 +6,6 @@
 const struct mps_kernel_ops *const mps_kernel_table[] = {
     &mps_kernel_zhang2014,
     &mps_kernel_koshizuka1996,
+    &mps_kernel_poly6,
     NULL
 };

@@ -46,8 +46,24 @@ static void test_properties(void **s)
     }
 }
 
+/* E5-01 (doc/theory.md): the soil model's kernel (8) on the 2-D square
+ * lattice, r_e = 2.1 dp: n0 = 2.505337, lambda = 1.264422 dp^2 (12
+ * neighbours), to 1e-6. */
+static void test_poly6_lattice(void **s)
+{
+    (void)s;
+    const double dp = 0.002;
+    struct pop_lattice L;
+    assert_int_equal(mps_lattice_constants(&mps_kernel_poly6, 2, dp, 2.1 * dp, &L), 0);
+    assert_int_equal(L.nnb, 12);
+    assert_float_equal(L.n0, 2.505337, 1e-6);
+    assert_float_equal(L.lambda / (dp * dp), 1.264422, 1e-6);
+    assert_float_equal(mps_kernel_poly6.w(0, 2.1 * dp), 1.0, 0);
+}
+
 int main(void)
 {
-    const struct CMUnitTest tests[] = { cmocka_unit_test(test_properties) };
+    const struct CMUnitTest tests[] = { cmocka_unit_test(test_properties),
+                                        cmocka_unit_test(test_poly6_lattice) };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
