@@ -102,13 +102,13 @@ static int grid_box(size_t n, const double *x, double hmin, double lo[3],
         lo[a] = INFINITY, hi[a] = -INFINITY;
     for (size_t i = 0; i < n; i++)
         for (int a = 0; a < 3; a++) {
+            /* tested one by one: fmin and fmax would pass over a NaN */
+            if (!isfinite(x[3 * i + a]))
+                return sim_error(SIM_ERR_NUMERIC, "neighbour_half_build: "
+                                 "point %zu has a non-finite position", i);
             lo[a] = fmin(lo[a], x[3 * i + a]);
             hi[a] = fmax(hi[a], x[3 * i + a]);
         }
-    for (int a = 0; a < 3; a++)
-        if (!isfinite(lo[a]) || !isfinite(hi[a]))
-            return sim_error(SIM_ERR_NUMERIC, "neighbour_half_build: "
-                             "positions are not finite");
     *h = hmin;
     for (;;) {
         double cells = 1;
