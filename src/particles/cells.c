@@ -245,6 +245,26 @@ int cells_runs(const struct cell_grid *g, const double *p, double rc,
     return m;
 }
 
+int cells_runs_box(const struct cell_grid *g, const int ic[3], int reach,
+                   struct cell_run *rn, int64_t *len)
+{
+    int lo[3] = { 0, 0, 0 }, hi[3] = { 0, 0, 0 }, m = 0;
+    for (int k = 0; k < g->dim; k++) {
+        lo[k] = ic[k] > reach ? ic[k] - reach : 0;
+        hi[k] = ic[k] + reach < g->nc[k] ? ic[k] + reach : g->nc[k] - 1;
+    }
+    *len = 0;
+    for (int kz = lo[2]; kz <= hi[2]; kz++)
+        for (int ky = lo[1]; ky <= hi[1]; ky++) {
+            int64_t base = (int64_t)g->nc[0] * (ky + (int64_t)g->nc[1] * kz);
+            rn[m].a = g->start[base + lo[0]];
+            rn[m].b = g->start[base + hi[0] + 1];
+            *len += rn[m].b - rn[m].a;
+            m++;
+        }
+    return m;
+}
+
 void cells_gather(const struct cell_grid *g, const double *x, double *xs)
 {
     const int64_t nb = g->start[g->ncell];

@@ -68,6 +68,24 @@ enum { CELLS_MAX_RUNS = 64 };
 int cells_runs(const struct cell_grid *g, const double *p, double rc,
                struct cell_run *rn, int64_t *len);
 
+/* Runs of the cells within `reach` cells of cell ic along each axis
+ * (clipped to the grid; in cell order): (2 reach + 1)^(dim - 1) runs at
+ * most, reach <= 3. Cheaper than cells_runs when the cells are as large as
+ * the cut-off (reach 1: the 27 cells around a point), where trimming rows
+ * saves little. Returns the number of runs, their total length in *len. */
+int cells_runs_box(const struct cell_grid *g, const int ic[3], int reach,
+                   struct cell_run *rn, int64_t *len);
+
+/* Cell coordinates of binned particle i (not in the outside bucket). */
+static inline void cells_coords(const struct cell_grid *g, int i, int ic[3])
+{
+    int64_t c = g->cell_of[i];
+    ic[0] = (int)(c % g->nc[0]);
+    c /= g->nc[0];
+    ic[1] = (int)(c % g->nc[1]);
+    ic[2] = (int)(c / g->nc[1]);
+}
+
 /* Positions of the binned (not outside) particles in cell order:
  * xs[3 e + k] = x[3 order[e] + k] for e < start[ncell]. */
 void cells_gather(const struct cell_grid *g, const double *x, double *xs);

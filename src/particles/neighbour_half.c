@@ -3,8 +3,9 @@
  * (neighbour_half.h).
  *
  * The grid covers the bounding box of the points with cells of side at
- * least 2 R_max + skin, so that the candidates of point i lie within
- * R_i + R_max + skin, at most 3 cells away along each axis; the cell count
+ * least 2 R_max + skin, so that every partner of a point lies in the 27
+ * cells around it (cells_runs_box: cheaper than trimming rows of cells
+ * this large, which saves few candidates); the cell count
  * is capped near the point count so that a few points far apart cannot
  * blow up memory (the cells just get larger). Rows are sorted, so neither
  * the grid nor the traversal order shows in the list.
@@ -149,7 +150,9 @@ int neighbour_half_build(struct neighbour_half *nl, size_t n, const double *x,
     struct cell_run rn[CELLS_MAX_RUNS];
     for (size_t i = 0; i < n; i++) {
         int64_t len;
-        int nrun = cells_runs(g, x + 3 * i, r[i] + rmax + nl->skin, rn, &len);
+        int ic[3];
+        cells_coords(g, (int)i, ic);
+        int nrun = cells_runs_box(g, ic, 1, rn, &len);
         for (int q = 0; q < nrun; q++)
             for (int64_t s = rn[q].a; s < rn[q].b; s++) {
                 size_t j = (size_t)g->order[s];
