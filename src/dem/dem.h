@@ -1,7 +1,8 @@
 /*
  * dem.h — the DEM library: spheres with translation and rotation (doc/theory.md
  * A.6, eqs. 17-18), contact laws assembled from sub-models (contact.h),
- * analytic walls (wall.h), a Verlet-skin neighbour list (nlist.h), and time
+ * analytic walls (wall.h), a Verlet-skin half neighbour list with contact
+ * history (particles/neighbour_half.h), and time
  * integrators selected by name (integrator.h).
  *
  * Storage is structure-of-arrays; vectors are interleaved (3 doubles per
@@ -24,8 +25,11 @@
 #include <stdint.h>
 
 #include "dem/contact/contact.h"
-#include "dem/neighbour/nlist.h"
 #include "dem/walls/wall.h"
+#include "particles/neighbour_half.h"
+
+/* Loops over fewer grains than this run on one thread. */
+#define DEM_OMP_MIN 2000
 
 #define DEM_MAX_PATCHES 64
 
@@ -79,7 +83,7 @@ struct dem {
     int have_domain, remove_outside;
     double dom_lo[3], dom_hi[3];
     /* neighbours and contact history */
-    struct dem_nlist nl;
+    struct neighbour_half nl;
     double *hist;                 /* 3 per candidate pair                   */
     double *pair_c;               /* 2 per pair: chi, m* (constant while
                                      the list lives)                       */

@@ -33,7 +33,7 @@
  * evaluation counted as hist_evals, after which ARKode re-evaluates the
  * right-hand side), and the phases found there take effect. When the
  * neighbour list is rebuilt the slots change: the springs are carried by
- * the list (nlist_carry) and S is re-laid out (ERKStepResize, which keeps
+ * the list (neighbour_half_carry) and S is re-laid out (ERKStepResize, which keeps
  * the step size).
  *
  * Step size: ARKode's error control with rtol and a vector atol
@@ -165,7 +165,7 @@ static double move_limit(struct dem *d, const double *x, const double *v)
         }
     }
     if (d->n > 1 && vmax > 0) {
-        double room = 0.5 * d->nl.skin - nlist_max_displacement(&d->nl, x);
+        double room = 0.5 * d->nl.skin - neighbour_half_max_displacement(&d->nl, x);
         h = fmin(h, fmax(room, 0.05 * d->nl.skin) / vmax);
     }
     return h;
@@ -660,7 +660,7 @@ static int ark_advance(void *ctx, struct dem *d, double t_end)
             memcpy(a->g0, a->gcache, nslot * sizeof *a->g0);
         }
         if (flag != ARK_TSTOP_RETURN && t < t_end
-            && nlist_stale(&d->nl, d->n, yy)) {
+            && neighbour_half_stale(&d->nl, d->n, yy)) {
             long ex1, acc1, rej1;
             ERKStepGetTimestepperStats(a->mem, &ex1, &acc1, &att, &fe, &rej1);
             steps += (ex1 + acc1) - (ex0 + acc0);
