@@ -14,20 +14,40 @@
  * starts inside a step starts from 0 at its onset. The transport term keeps
  * a pair spring in the turning tangent plane (dem_forces.c).
  *
- * The Coulomb slider is a phase per slot (dem.h slip_mode): it starts where
- * |F^t| reaches mu |F^n| and ends where the spring stops loading
- * (s^.v^t = 0); inside it the force is -mu |F^n| s^ whatever the state's
- * length. Both are events (slipEvents): after each accepted step the
- * switching functions (dem.h slip_g) at its end are compared with those at
- * its start; where one fell through 0, or a contact ended, the event is
- * located on exact re-integrations from the step's start (locate_event:
- * ARKode's own root finding works on its interpolant, which was not
- * accurate enough), the state taken just past it, the springs projected
- * there (which switches the phases and puts a slipping spring at the
- * limit) and the integration restarted (ERKStepReset). A phase that starts
- * and ends inside a step shows in the switching functions at the stages
- * (eval): the step is redone in quarters. Without events the slider acts
- * one step late, a first-order error outside the error test. At accepted
+ * The Coulomb slider is a phase per slot (dem.h slip_mode; doc/theory.md
+ * A0-24): it starts where the stick force |kt S + eta^t v^t| or the
+ * spring's force kt |S| reaches mu |F^n| (the cone of the contact law),
+ * and lasts while the stick force from the spring at the limit,
+ * |mu |F^n| s^ + eta^t v^t|, is still outside the cone or the spring
+ * would leave it,
+ *
+ *   D = d/dt (kt |S| - mu |F^n|) > 0   along the stick flow, at the limit
+ *
+ * (dem_slip_rates, after the accelerations are known). Ending it where
+ * the spring merely stops loading (s^.v^t = 0, until 2026-11-27) left a
+ * spring whose limit shrank faster than it unloaded outside the cone, and
+ * stick and slip chattered near gross slip (60 deg impacts). Inside a
+ * phase the force is -mu |F^n| s^ whatever the state's length; it holds
+ * for the whole step, its end being an event. Events (slipEvents): after
+ * each accepted step the switching functions (dem.h slip_g) and F^n at its
+ * end are compared with those at its start; where a switching function
+ * fell through 0, F^n changed sign (a kink of the limit) or a contact
+ * ended, the event is located on exact re-integrations from the step's
+ * start (locate_event: ARKode's own root finding works on its
+ * interpolant, which was not accurate enough), the state taken just past
+ * it, where the post-step hook has projected the springs (which puts a
+ * slipping spring at the limit) and found the phases from the state
+ * before that projection, and the integration restarted (ERKStepReset).
+ * A new slip phase whose switching function is not positive at once is a
+ * slip of zero length (the dashpot drove the stick force out of the cone
+ * against the spring): the projection was all of it, and stick goes on;
+ * such jumps come faster and faster up to the point where slip proper
+ * starts, and one within 1e-9/omega of the slot's last is taken as that
+ * point. A phase that starts and ends inside a step shows in the
+ * switching functions at the stages (eval; slots that start the step on
+ * the cone are left out): the step is redone in quarters. Without events
+ * a phase changes at the next accepted step (slipEvents off, large
+ * systems), a first-order error outside the error test. At accepted
  * steps the springs are projected as the contact law implies (rotation,
  * limit, 0 out of contact: post-step hook, one committing force
  * evaluation counted as hist_evals, after which ARKode re-evaluates the
@@ -551,10 +571,10 @@ static int locate_event(struct ark *a, double t0, double *t)
     ghi = g_min(a, nslot);
     N_VScale(1.0, a->y, a->yhi);
     memcpy(a->mode_hi, a->mode_next, nslot);
-    /* the start of a slip phase saturates at g = -1e-7 past the zero
-     * (the law caps |F^t|), which stalls regula falsi: bisect until two
-     * points lie before the zero, then take secants from that side,
-     * landing just past the estimate */
+    /* a switching function may have a kink at the zero (the larger of
+     * two forces, F^n through 0), which stalls regula falsi: bisect
+     * until two points lie before the zero, then take secants from that
+     * side, landing just past the estimate */
     double ttol = 1e-6 * (thi - tlo), tlo2 = tlo, glo2 = glo;
     int have2 = 0;
     (void)ghi;

@@ -8,10 +8,11 @@
  *     refused with the bound;
  *   - coupling: drag evaluated each sub-step with the current velocity, its
  *     time average returned, momentum balance exact;
- *   - oblique sphere-wall impacts (10, 30 and 60 deg, mu 0.3, mindlin and
+ *   - oblique sphere-wall impacts (10 ... 80 deg, mu 0.3, mindlin and
  *     xie2025 stiffness): ARKode's rebound spin and tangential velocity
- *     converge to converged Verlet's with rtol (the springs are in the
- *     error-controlled state, slip phases located exactly);
+ *     converge with rtol to an independent reference of the same law
+ *     (oblique_reference.h; the springs are in the error-controlled
+ *     state, slip phases located exactly), Verlet's with dt;
  *   - Verlet keeps the forces between advances: N steps cost N + 1 force
  *     evaluations however they are split, with bit-identical results.
  */
