@@ -290,7 +290,7 @@ static void oblique(const struct dem_integrator_ops *ops,
  * v_t0 and v_t0/R; every case must converge with rtol (the rtol 1e-8
  * error below both others) to below 1e-4 at rtol 1e-8. Verlet with the
  * same law converges to the same reference at first order (printed, and
- * checked to 2e-4 at dt = 1e-9 s). Measured values: doc/theory.md A.6,
+ * checked to 5e-5 at dt = 1e-9 s). Measured values: doc/theory.md A.6,
  * test/bench/README.dem.md. */
 static void test_oblique_impact_order(void **state)
 {
@@ -352,7 +352,7 @@ static void test_oblique_impact_order(void **state)
                        ra.vt, ra.w, ev[k], ew[k], ra.steps, ra.evals);
             }
             assert_true(rerr < 1e-10);
-            assert_true(evv[1] < 2e-4);
+            assert_true(evv[1] < 5e-5);
             assert_true(ev[2] < ev[1] && ev[2] < ev[0]);
             assert_true(ew[2] < ew[1] && ew[2] < ew[0]);
             assert_true(ev[2] < 1e-4 && ew[2] < 1e-4);
