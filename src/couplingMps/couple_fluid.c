@@ -80,21 +80,10 @@ int couple_fluid_init(struct couple_fluid *cf, const struct dict *coupling,
     memcpy(cf->g, s->S.g, sizeof cf->g);
     int cap = P->cap > P->n ? P->cap : P->n;
     TRY(grow_particles(cf, cap));
-    if (!P->inv_eps)
-        P->inv_eps = malloc((size_t)cap * sizeof *P->inv_eps + 64);
-    if (!P->f_ext)
-        P->f_ext = calloc(3 * (size_t)cap + 8, sizeof *P->f_ext);
-    if (!P->inv_eps || !P->f_ext)
-        return SIM_ERR_NOMEM;
     /* Model A's factors are 1: its solver gets no hooks for them. */
-    if (cf->cs.model == COUPLING_MODEL_B) {
-        if (!P->ppe_scale)
-            P->ppe_scale = malloc((size_t)cap * sizeof *P->ppe_scale + 64);
-        if (!P->corr_scale)
-            P->corr_scale = malloc((size_t)cap * sizeof *P->corr_scale + 64);
-        if (!P->ppe_scale || !P->corr_scale)
-            return SIM_ERR_NOMEM;
-    }
+    TRY(mps_particles_add(P, MPS_P_INV_EPS | MPS_P_F_EXT
+                             | (cf->cs.model == COUPLING_MODEL_B
+                                ? MPS_P_PPE_SCALE | MPS_P_CORR_SCALE : 0)));
     for (int i = 0; i < cap; i++) {
         P->inv_eps[i] = 1.0;
         cf->eps[i] = 1.0;

@@ -21,9 +21,7 @@ void dem_init(struct dem *d)
 
 void dem_free(struct dem *d)
 {
-    free(d->x); free(d->v); free(d->w); free(d->r); free(d->m);
-    free(d->inv_m); free(d->inv_i); free(d->group); free(d->id);
-    free(d->acc); free(d->alpha);
+    store_free(&d->st);
     free(d->walls);
     if (d->motions)
         for (int k = 0; k < DEM_MAX_PATCHES; k++)
@@ -34,36 +32,47 @@ void dem_free(struct dem *d)
     free(d->wstart); free(d->wlist); free(d->wgrain);
     free(d->old_start); free(d->old_j); free(d->old_h);
     free(d->tbuf);
-    free(d->cpl.fd); free(d->cpl.fd_sum);
     memset(d, 0, sizeof *d);
+}
+
+/* The grains' fields; the order of the written ones is that of dem.vtu. */
+static int register_fields(struct dem *d)
+{
+    struct store *st = &d->st;
+    store_init(st, "field of the dem cloud");
+    TRY(store_add(st, "position", "[m]", VTU_FLOAT64, 3, STORE_POINTS, &d->x));
+    TRY(store_add(st, "radius", "[m]", VTU_FLOAT64, 1, STORE_WRITE, &d->r));
+    TRY(store_add(st, "velocity", "[m/s]", VTU_FLOAT64, 3, STORE_WRITE,
+                  &d->v));
+    TRY(store_add(st, "omega", "[rad/s]", VTU_FLOAT64, 3, STORE_WRITE,
+                  &d->w));
+    TRY(store_add(st, "group", "", VTU_INT32, 1, STORE_WRITE, &d->group));
+    TRY(store_add(st, "id", "persistent", VTU_INT64, 1, STORE_WRITE, &d->id));
+    TRY(store_add(st, "mass", "[kg]", VTU_FLOAT64, 1, 0, &d->m));
+    TRY(store_add(st, "inverseMass", "[1/kg]", VTU_FLOAT64, 1, 0,
+                  &d->inv_m));
+    TRY(store_add(st, "inverseInertia", "[1/(kg m^2)]", VTU_FLOAT64, 1, 0,
+                  &d->inv_i));
+    TRY(store_add(st, "acceleration", "[m/s^2]", VTU_FLOAT64, 3, 0,
+                  &d->acc));
+    TRY(store_add(st, "angularAcceleration", "[rad/s^2]", VTU_FLOAT64, 3, 0,
+                  &d->alpha));
+    TRY(store_add(st, "dragForce", "at the last evaluation [N]",
+                  VTU_FLOAT64, 3, 0, &d->cpl.fd));
+    TRY(store_add(st, "dragImpulse", "since the last exchange [N s]",
+                  VTU_FLOAT64, 3, 0, &d->cpl.fd_sum));
+    return SIM_OK;
 }
 
 int dem_resize(struct dem *d, size_t n)
 {
-    if (n > d->cap || !d->x) {
-        size_t cap = n > 0 ? n : 1;
-        SIM_GROW(d->x, 3 * cap);
-        SIM_GROW(d->v, 3 * cap);
-        SIM_GROW(d->w, 3 * cap);
-        SIM_GROW(d->acc, 3 * cap);
-        SIM_GROW(d->alpha, 3 * cap);
-        SIM_GROW(d->r, cap);
-        SIM_GROW(d->m, cap);
-        SIM_GROW(d->inv_m, cap);
-        SIM_GROW(d->inv_i, cap);
-        SIM_GROW(d->group, cap);
-        SIM_GROW(d->id, cap);
-        SIM_GROW(d->cpl.fd, 3 * cap);
-        SIM_GROW(d->cpl.fd_sum, 3 * cap);
-        for (size_t i = d->n; i < cap; i++) {
-            for (int a = 0; a < 3; a++)
-                d->x[3 * i + a] = d->v[3 * i + a] = d->w[3 * i + a] = 0;
-            for (int a = 0; a < 3; a++)
-                d->cpl.fd[3 * i + a] = d->cpl.fd_sum[3 * i + a] = 0;
-            d->r[i] = 0, d->group[i] = 0, d->id[i] = (int64_t)i;
-        }
-        d->cap = cap;
-    }
+    if (d->st.nfields == 0)
+        TRY(register_fields(d));
+    size_t old = d->st.n;
+    TRY(store_reserve(&d->st, n > 0 ? n : 1));
+    TRY(store_resize(&d->st, n));
+    for (size_t i = old; i < n; i++)
+        d->id[i] = (int64_t)i;
     d->n = n;
     return SIM_OK;
 }
@@ -302,8 +311,12 @@ long dem_check_domain(struct dem *d)
     if (count == 0 || !d->remove_outside)
         return count;
     size_t *map = sim_malloc(d->n * sizeof *map);
-    if (!map)
+    int32_t *kept = sim_malloc(d->n * sizeof *kept);
+    if (!map || !kept) {
+        free(map);
+        free(kept);
         return count;  /* keep them: memory is too short to remove */
+    }
     size_t k = 0, old_n = d->n;
     for (size_t i = 0; i < old_n; i++) {
         if (outside(d, i)) {
@@ -311,23 +324,24 @@ long dem_check_domain(struct dem *d)
             continue;
         }
         map[i] = k;
-        if (k != i) {
-            memcpy(&d->x[3 * k], &d->x[3 * i], 3 * sizeof(double));
-            memcpy(&d->v[3 * k], &d->v[3 * i], 3 * sizeof(double));
-            memcpy(&d->w[3 * k], &d->w[3 * i], 3 * sizeof(double));
+        kept[k] = (int32_t)i;
+        /* wall histories: nwalls per grain, not a per-grain field */
+        if (k != i)
             for (int wl = 0; wl < d->nwalls; wl++)
                 memcpy(&d->whist[3 * (k * d->nwalls + wl)],
                        &d->whist[3 * (i * d->nwalls + wl)], 3 * sizeof(double));
-            d->r[k] = d->r[i], d->m[k] = d->m[i];
-            d->inv_m[k] = d->inv_m[i], d->inv_i[k] = d->inv_i[i];
-            d->group[k] = d->group[i], d->id[k] = d->id[i];
-        }
         k++;
+    }
+    int rc = store_compact(&d->st, kept, k);
+    free(kept);
+    if (rc) {
+        free(map);
+        return -1;
     }
     d->n = k;
     d->stats.removed += count;
-    dem_invalidate_forces(d);   /* acc, alpha were not compacted */
-    int rc = rebuild(d, d->x, map, old_n);
+    dem_invalidate_forces(d);   /* forces of the removed grains acted */
+    rc = rebuild(d, d->x, map, old_n);
     free(map);
     return rc == SIM_OK ? count : -1;
 }

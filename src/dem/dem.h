@@ -27,6 +27,7 @@
 #include "dem/contact/contact.h"
 #include "dem/walls/wall.h"
 #include "particles/neighbour_half.h"
+#include "particles/store.h"
 
 /* Loops over fewer grains than this run on one thread. */
 #define DEM_OMP_MIN 2000
@@ -63,8 +64,11 @@ struct dem_stats {
 };
 
 struct dem {
-    /* grains */
-    size_t n, cap;
+    /* grains: the arrays below (x ... id, acc, alpha, cpl.fd, cpl.fd_sum)
+     * are registered by name in st (particles/store.h), which grows,
+     * compacts and writes them; n repeats st.n */
+    struct store st;
+    size_t n;
     double *x, *v, *w;            /* 3n position [m], velocity, spin [rad/s] */
     double *r, *m, *inv_m, *inv_i;/* radius, mass, 1/m, 1/I (I = 2/5 m R^2)  */
     int32_t *group;
@@ -156,7 +160,8 @@ struct dem {
 void dem_init(struct dem *d);
 void dem_free(struct dem *d);
 
-/* Make room for n grains (keeps the first min(n, old n)). */
+/* Make room for n grains (keeps the first min(n, old n)); new grains are
+ * zero with id = their index. */
 int dem_resize(struct dem *d, size_t n);
 
 /* After x, v, w, r (and id/group) are set: masses from rho, derived

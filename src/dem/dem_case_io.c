@@ -228,14 +228,8 @@ int dem_read_grains(const char *path, struct dem *d)
 
 int dem_write_grains(const char *path, const struct dem *d, int binary)
 {
-    struct vtu_field f[5] = {
-        {"radius", VTU_FLOAT64, 1, d->r},
-        {"velocity", VTU_FLOAT64, 3, d->v},
-        {"omega", VTU_FLOAT64, 3, d->w},
-        {"group", VTU_INT32, 1, d->group},
-        {"id", VTU_INT64, 1, d->id},
-    };
-    struct vtu_cloud c = {.n = d->n, .points = d->x, .nfields = 5,
-                          .fields = f, .time = d->t};
+    struct vtu_field f[STORE_MAX_FIELDS];
+    struct vtu_cloud c;
+    store_cloud(&d->st, d->t, f, &c);
     return vtu_write(path, &c, binary);
 }

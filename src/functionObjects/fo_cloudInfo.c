@@ -24,10 +24,10 @@ struct cloud_info {
 
 static const int32_t *type_field(const struct fo_scene *s)
 {
-    const struct vtu_field *f = vtu_find(s->cloud, "type");
+    const struct store_field *f = store_find(s->store, "type");
     if (!f || f->type != VTU_INT32 || f->ncomp != 1)
         return NULL;
-    return f->data;
+    return *f->ref;
 }
 
 static int create(const struct dict *d, const struct fo_scene *s, void **data)
@@ -55,23 +55,27 @@ static int header(void *data, const struct fo_scene *s, FILE *f)
 static int execute(void *data, const struct fo_scene *s, FILE *f)
 {
     struct cloud_info *c = data;
-    const struct vtu_cloud *cl = s->cloud;
+    const void *x;
+    TRY(store_require(s->store, s->cloud_name, "position", VTU_FLOAT64, 3,
+                      &x));
+    const double *points = x;
+    const size_t n = s->store->n;
     const int32_t *type = c->has_type ? type_field(s) : NULL;
     long count[MAX_TYPES] = {0};
     double lo[3] = {DBL_MAX, DBL_MAX, DBL_MAX};
     double hi[3] = {-DBL_MAX, -DBL_MAX, -DBL_MAX};
-    for (size_t i = 0; i < cl->n; i++) {
+    for (size_t i = 0; i < n; i++) {
         if (type && type[i] >= 0 && type[i] < MAX_TYPES)
             count[type[i]]++;
         if (type && type[i] != 0)
             continue;
         for (int k = 0; k < 3; k++) {
-            double x = cl->points[3 * i + k];
+            double x = points[3 * i + k];
             lo[k] = x < lo[k] ? x : lo[k];
             hi[k] = x > hi[k] ? x : hi[k];
         }
     }
-    fprintf(f, "%.9g %zu", s->time, cl->n);
+    fprintf(f, "%.9g %zu", s->time, n);
     if (c->has_type)
         for (int k = 0; k < MAX_TYPES; k++)
             fprintf(f, " %ld", count[k]);

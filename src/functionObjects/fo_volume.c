@@ -54,9 +54,9 @@ static int execute(void *data, const struct fo_scene *s, FILE *out)
     TRY(mps_fo_fields_get(NULL, s, MPS_FO_TYPE, &f));
     long count = 0, n = (long)f.n;
     double sum = 0; /* fluid volume in dp^d: the volume fractions if any */
-    const struct vtu_field *vf = vtu_find(s->cloud, "volumeFraction");
+    const struct store_field *vf = store_find(s->store, "volumeFraction");
     const double *phi = vf && vf->type == VTU_FLOAT64 && vf->ncomp == 1
-                      ? vf->data : NULL;
+                      ? *vf->ref : NULL;
 #pragma omp parallel for reduction(+ : count, sum) schedule(static)
     for (long i = 0; i < n; i++)
         if (f.type[i] == 0) {

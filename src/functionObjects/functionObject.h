@@ -28,7 +28,7 @@
 
 #include <stdio.h>
 
-#include "io/vtu.h"
+#include "particles/store.h"
 
 struct dict;
 
@@ -46,7 +46,8 @@ struct fo_scene {
     long step;
     int dim;                       /* 2 or 3                                  */
     const char *cloud_name;        /* "fluid" or "dem"                        */
-    const struct vtu_cloud *cloud; /* positions and fields, by name           */
+    const struct store *store;     /* the cloud's fields by name (store_require,
+                                      "position" among them); n particles     */
     double spacing;                /* fluid dp, or mean grain diameter [m]    */
     const char *const *patch_names;/* patch id -> name (constant/particlePatches) */
     int npatches;

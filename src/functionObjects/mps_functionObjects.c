@@ -70,17 +70,19 @@ int mps_fo_fields_get(const struct dict *who, const struct fo_scene *s,
                   s->spacing);
         return located(who, SIM_ERR_INPUT);
     }
-    f->n = s->cloud->n;
-    f->x = s->cloud->points;
+    const char *cloud = s->cloud_name ? s->cloud_name : "cloud";
+    const void *v;
+    f->n = s->store->n;
+    if (store_require(s->store, cloud, "position", VTU_FLOAT64, 3, &v))
+        return located(who, SIM_ERR_INPUT);
+    f->x = v;
     for (size_t k = 0; k < sizeof specs / sizeof specs[0]; k++) {
-        const struct vtu_field *v;
         if (!(mask & specs[k].bit))
             continue;
-        if (vtu_require(s->cloud, s->cloud_name ? s->cloud_name : "cloud",
-                        specs[k].name, (int)specs[k].type, specs[k].ncomp,
-                        &v) != SIM_OK)
+        if (store_require(s->store, cloud, specs[k].name, (int)specs[k].type,
+                          specs[k].ncomp, &v) != SIM_OK)
             return located(who, SIM_ERR_INPUT);
-        memcpy((char *)f + specs[k].offset, &v->data, sizeof(void *));
+        memcpy((char *)f + specs[k].offset, &v, sizeof(void *));
     }
     return SIM_OK;
 }

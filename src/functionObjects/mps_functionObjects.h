@@ -20,8 +20,10 @@
  *
  * ---- Contract: what the solver publishes in struct fo_scene -------------
  *
- * scene->cloud has the positions (x y z; z = 0 in 2-D) and these point
- * fields, by name (type, components):
+ * scene->store (particles/store.h, the solver's own field registry) has
+ * the positions, "position" (Float64 x3; z = 0 in 2-D), and these fields,
+ * by name (type, components); store_require() checks them, and answers an
+ * unknown name with the valid ones and "did you mean":
  *
  *   type           Int32   x1  0 fluid, 1 wall (in the PPE), 2 dummy
  *   patch          Int32   x1  -1 fluid, else the wall patch index k;

@@ -43,6 +43,7 @@
 #include "mps/operators.h"
 #include "particles/cells.h"
 #include "particles/neighbour.h"
+#include "particles/store.h"
 
 struct mps_kernel_ops;
 struct mps_stabiliser_ops;
@@ -65,8 +66,12 @@ enum {
  * the surface dp/2 outside them (surface_pressure.c). */
 enum { MPS_FS_P_ZERO = 0, MPS_FS_P_EXTRAPOLATED = 1 };
 
+/* The arrays are registered by name in `st` (particles/store.h), which
+ * grows, renumbers, compacts and writes them all; n and cap repeat the
+ * registry's counts as int for the solver's loops. */
 struct mps_particles {
     int n, cap, dim;
+    struct store st;
     double *x;        /* 3n positions [m]                                */
     double *u;        /* 3n velocities [m/s]                             */
     double *p;        /* n pressure [Pa]                                 */
@@ -176,8 +181,7 @@ struct mps_solver {
     uint8_t *cell_wet;              /* per cell of the grid: holds fluid */
     size_t cap_cells;
     int n_thin_walls;               /* found on the first list           */
-    void *scratch;
-    int32_t *perm, *inv;
+    int32_t *perm;                  /* renumbering and removal lists     */
     /* PPE */
     struct csr_matrix A;
     size_t cap_nnz;
@@ -204,8 +208,20 @@ int mps_check_extent(const struct mps_particles *P,
                      const struct mps_settings *S, double dp,
                      const char *origin);
 
-/* Allocate particle arrays for n particles (zeroed; partner = -1). */
+/* Allocate particle arrays for n particles (zeroed; partner = -1, id = i).
+ * A caller that sets P->n to fewer particles afterwards (a test filling
+ * part of the room) is taken at its word by mps_solver_init. */
 int mps_particles_alloc(struct mps_particles *P, int n, int dim);
+
+/* The optional fields (coupling hooks), allocated zero for cap particles
+ * and registered so that they follow renumbering and removal; fields
+ * already present are kept. */
+enum {
+    MPS_P_INV_EPS = 1u << 0, MPS_P_F_EXT = 1u << 1,
+    MPS_P_PPE_SCALE = 1u << 2, MPS_P_CORR_SCALE = 1u << 3,
+    MPS_P_PHI = 1u << 4,   /* "volumeFraction", written to fluid.vtu */
+};
+int mps_particles_add(struct mps_particles *P, unsigned which);
 void mps_particles_free(struct mps_particles *P);
 
 /* Settings with the documented defaults (mps_solver.c; the paper's method:

@@ -5,8 +5,10 @@
 
 #include "mps/mps.h"
 
-void mps_particles_permute(struct mps_solver *s, const int32_t *perm, int n);
-int mps_particles_drop_outside(struct mps_solver *s);
+/* Keep n particles, new i <- old perm[i] (every registered field). */
+int mps_particles_permute(struct mps_solver *s, const int32_t *perm, int n);
+/* Remove the particles outside the box; *lost: the fluid ones among them. */
+int mps_particles_drop_outside(struct mps_solver *s, int *lost);
 
 /* Neighbours (with removal of escaped particles and renumbering) and the
  * weights of each operator radius. */

@@ -1,6 +1,8 @@
-/* mps_particles.c — particle storage: allocation, removal of escaped
- * particles and renumbering in cell order (every per-particle array is
- * permuted; the dummy -> wall partner index is remapped). */
+/* mps_particles.c — the fluid's fields in the particle registry
+ * (particles/store.h): allocation, the optional coupling fields, removal
+ * of escaped particles and renumbering in cell order. The registry moves
+ * every field; the dummy -> wall partner index is a STORE_INDEX field and
+ * follows its wall particle. */
 #include <stdlib.h>
 #include <string.h>
 
@@ -11,25 +13,38 @@
 int mps_particles_alloc(struct mps_particles *P, int n, int dim)
 {
     memset(P, 0, sizeof *P);
-    P->n = n;
-    P->cap = n > 0 ? n : 1;
     P->dim = dim;
-    size_t c = (size_t)P->cap;
-    P->x = sim_calloc(3 * c, sizeof *P->x);
-    P->u = sim_calloc(3 * c, sizeof *P->u);
-    P->p = sim_calloc(c, sizeof *P->p);
-    P->normal = sim_calloc(3 * c, sizeof *P->normal);
-    P->type = sim_calloc(c, sizeof *P->type);
-    P->patch = sim_calloc(c, sizeof *P->patch);
-    P->id = sim_calloc(c, sizeof *P->id);
-    P->partner = sim_calloc(c, sizeof *P->partner);
-    P->nd = sim_calloc(c, sizeof *P->nd);
-    P->fs = sim_calloc(c, sizeof *P->fs);
-    if (!P->x || !P->u || !P->p || !P->normal || !P->type || !P->patch
-        || !P->id || !P->partner || !P->nd || !P->fs) {
+    struct store *st = &P->st;
+    store_init(st, "field of the fluid cloud");
+    /* the order of the STORE_WRITE fields is that of fluid.vtu */
+    int rc = store_add(st, "position", "[m]", VTU_FLOAT64, 3, STORE_POINTS,
+                       &P->x);
+    if (!rc) rc = store_add(st, "type", "0 fluid, 1 wall, 2 dummy",
+                            VTU_INT32, 1, STORE_WRITE, &P->type);
+    if (!rc) rc = store_add(st, "patch", "-1 fluid, else the wall patch",
+                            VTU_INT32, 1, STORE_WRITE, &P->patch);
+    if (!rc) rc = store_add(st, "velocity", "[m/s]", VTU_FLOAT64, 3,
+                            STORE_WRITE, &P->u);
+    if (!rc) rc = store_add(st, "pressure", "[Pa]", VTU_FLOAT64, 1,
+                            STORE_WRITE, &P->p);
+    if (!rc) rc = store_add(st, "normal", "wall/dummy, fluid -> solid",
+                            VTU_FLOAT64, 3, STORE_WRITE, &P->normal);
+    if (!rc) rc = store_add(st, "id", "persistent", VTU_INT64, 1,
+                            STORE_WRITE, &P->id);
+    if (!rc) rc = store_add(st, "numberDensity", "n_i/n0", VTU_FLOAT64, 1,
+                            STORE_WRITE, &P->nd);
+    if (!rc) rc = store_add(st, "freeSurface", "0 inner, 1 surface, 2 dry "
+                            "wall", VTU_UINT8, 1, STORE_WRITE, &P->fs);
+    if (!rc) rc = store_add(st, "partner", "wall particle of a dummy",
+                            VTU_INT32, 1, STORE_INDEX, &P->partner);
+    if (!rc) rc = store_reserve(st, n > 0 ? (size_t)n : 1);
+    if (!rc) rc = store_resize(st, (size_t)n);
+    if (rc) {
         mps_particles_free(P);
-        return SIM_ERR_NOMEM;
+        return rc;
     }
+    P->n = n;
+    P->cap = (int)st->cap;
     for (int i = 0; i < n; i++) {
         P->partner[i] = -1;
         P->id[i] = i;
@@ -37,65 +52,58 @@ int mps_particles_alloc(struct mps_particles *P, int n, int dim)
     return SIM_OK;
 }
 
+int mps_particles_add(struct mps_particles *P, unsigned which)
+{
+    struct store *st = &P->st;
+    if ((which & MPS_P_INV_EPS) && !P->inv_eps)
+        TRY(store_add(st, "inversePorosity", "1/eps, or phi/eps",
+                      VTU_FLOAT64, 1, 0, &P->inv_eps));
+    if ((which & MPS_P_F_EXT) && !P->f_ext)
+        TRY(store_add(st, "externalAcceleration", "[m/s^2]", VTU_FLOAT64, 3,
+                      0, &P->f_ext));
+    if ((which & MPS_P_PPE_SCALE) && !P->ppe_scale)
+        TRY(store_add(st, "ppeScale", "PPE source factor", VTU_FLOAT64, 1,
+                      0, &P->ppe_scale));
+    if ((which & MPS_P_CORR_SCALE) && !P->corr_scale)
+        TRY(store_add(st, "correctionScale", "pressure correction factor",
+                      VTU_FLOAT64, 1, 0, &P->corr_scale));
+    if ((which & MPS_P_PHI) && !P->phi)
+        TRY(store_add(st, "volumeFraction", "fluid volume / dp^d",
+                      VTU_FLOAT64, 1, STORE_WRITE, &P->phi));
+    return SIM_OK;
+}
+
 void mps_particles_free(struct mps_particles *P)
 {
-    free(P->x); free(P->u); free(P->p); free(P->normal);
-    free(P->type); free(P->patch); free(P->id); free(P->partner);
-    free(P->nd); free(P->fs); free(P->inv_eps); free(P->f_ext);
-    free(P->ppe_scale); free(P->corr_scale); free(P->phi);
+    store_free(&P->st);
     memset(P, 0, sizeof *P);
 }
 
-/* Permute every array by perm (new i <- old perm[i]), n entries kept. */
-void mps_particles_permute(struct mps_solver *s, const int32_t *perm, int n)
+/* The registry's count back into P->n (int: the solver's loops). */
+static int synced(struct mps_particles *P, int rc)
 {
-    struct mps_particles *P = &s->P;
-    void *scr = s->scratch;
-    int nold = P->n;
-    cells_permute(P->x, 3 * sizeof *P->x, perm, n, scr);
-    cells_permute(P->u, 3 * sizeof *P->u, perm, n, scr);
-    cells_permute(P->normal, 3 * sizeof *P->normal, perm, n, scr);
-    cells_permute(P->p, sizeof *P->p, perm, n, scr);
-    cells_permute(P->type, sizeof *P->type, perm, n, scr);
-    cells_permute(P->patch, sizeof *P->patch, perm, n, scr);
-    cells_permute(P->id, sizeof *P->id, perm, n, scr);
-    cells_permute(P->nd, sizeof *P->nd, perm, n, scr);
-    cells_permute(P->fs, sizeof *P->fs, perm, n, scr);
-    if (P->inv_eps)
-        cells_permute(P->inv_eps, sizeof *P->inv_eps, perm, n, scr);
-    if (P->f_ext)
-        cells_permute(P->f_ext, 3 * sizeof *P->f_ext, perm, n, scr);
-    if (P->ppe_scale)
-        cells_permute(P->ppe_scale, sizeof *P->ppe_scale, perm, n, scr);
-    if (P->corr_scale)
-        cells_permute(P->corr_scale, sizeof *P->corr_scale, perm, n, scr);
-    if (P->phi)
-        cells_permute(P->phi, sizeof *P->phi, perm, n, scr);
-    /* The PPE warm start lives in p; partner indices must follow. */
-    for (int i = 0; i < nold; i++)
-        s->inv[i] = -1;
-    for (int i = 0; i < n; i++)
-        s->inv[perm[i]] = i;
-    cells_permute(P->partner, sizeof *P->partner, perm, n, scr);
-    for (int i = 0; i < n; i++)
-        if (P->partner[i] >= 0)
-            P->partner[i] = s->inv[P->partner[i]];
-    P->n = n;
+    P->n = (int)P->st.n;
+    return rc;
+}
+
+int mps_particles_permute(struct mps_solver *s, const int32_t *perm, int n)
+{
+    return synced(&s->P, store_permute(&s->P.st, perm, (size_t)n));
 }
 
 /* Remove the particles of the grid's outside bucket (left the box, or
- * non-finite position); returns how many fluid particles were removed. */
-int mps_particles_drop_outside(struct mps_solver *s)
+ * non-finite position); *lost: how many of them were fluid. */
+int mps_particles_drop_outside(struct mps_solver *s, int *lost)
 {
     struct mps_particles *P = &s->P;
     const struct cell_grid *g = &s->grid;
-    int m = 0, lost = 0;
+    int m = 0;
+    *lost = 0;
     for (int i = 0; i < P->n; i++) {
         if (g->cell_of[i] != g->ncell)
             s->perm[m++] = i;
         else
-            lost += P->type[i] == MPS_FLUID;
+            *lost += P->type[i] == MPS_FLUID;
     }
-    mps_particles_permute(s, s->perm, m);
-    return lost;
+    return synced(P, store_compact(&P->st, s->perm, (size_t)m));
 }

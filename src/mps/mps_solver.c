@@ -139,17 +139,15 @@ static int alloc_work(struct mps_solver *s)
     s->rows_fluid = sim_calloc(c, 1);
     s->rows_ppe = sim_calloc(c, 1);
     s->rows_list = sim_calloc(c, 1);
-    s->scratch = sim_calloc(3 * c, sizeof(double));
     s->perm = sim_calloc(c, sizeof(int32_t));
-    s->inv = sim_calloc(c, sizeof(int32_t));
     s->unk = sim_calloc(c, sizeof(int32_t));
     s->b = sim_calloc(c, sizeof(double));
     s->sol = sim_calloc(c, sizeof(double));
     s->A.rowptr = sim_calloc(c + 1, sizeof(int64_t));
     s->x_ref = sim_calloc(3 * c, sizeof(double));
     if (!s->ustar || !s->grad || !s->lap || !s->div || !s->rows_fluid
-        || !s->rows_ppe || !s->rows_list || !s->scratch || !s->perm
-        || !s->inv || !s->unk || !s->b || !s->sol || !s->A.rowptr || !s->x_ref)
+        || !s->rows_ppe || !s->rows_list || !s->perm
+        || !s->unk || !s->b || !s->sol || !s->A.rowptr || !s->x_ref)
         return SIM_ERR_NOMEM;
     return SIM_OK;
 }
@@ -162,7 +160,11 @@ int mps_solver_init(struct mps_solver *s, struct mps_particles *P,
 {
     memset(s, 0, sizeof *s);
     s->P = *P;
+    store_moved(&s->P.st, P, &s->P, sizeof *P);
     memset(P, 0, sizeof *P);
+    /* P->n is the caller's word (a test may fill part of the room) */
+    TRY(store_resize(&s->P.st, (size_t)s->P.n));
+    s->P.cap = (int)s->P.st.cap;
     s->S = *S;
     s->dp = dp;
     s->ls = ls;
@@ -232,8 +234,8 @@ void mps_solver_free(struct mps_solver *s)
         free(s->w_l);
     free(s->ustar); free(s->grad); free(s->lap); free(s->div);
     free(s->rows_fluid); free(s->rows_ppe); free(s->rows_list);
-    free(s->cell_wet); free(s->scratch);
-    free(s->perm); free(s->inv); free(s->unk); free(s->b); free(s->sol);
+    free(s->cell_wet);
+    free(s->perm); free(s->unk); free(s->b); free(s->sol);
     free(s->A.rowptr); free(s->A.col); free(s->A.val); free(s->x_ref);
     free(s->wall_dx);
     linsolve_free(s->ls);
@@ -382,7 +384,8 @@ int mps_neighbours(struct mps_solver *s)
     TRY(cells_build(&s->grid, P->dim, P->x, P->n, cell_h, s->box_lo,
                     s->box_hi));
     if (s->grid.n_outside) {
-        int lost = mps_particles_drop_outside(s);
+        int lost;
+        TRY(mps_particles_drop_outside(s, &lost));
         s->n_escaped += lost;
         log_info("    %d fluid particle(s) left the domain [%g %g %g] - "
                  "[%g %g %g] and were removed (%ld in total)", lost,
@@ -400,7 +403,7 @@ int mps_neighbours(struct mps_solver *s)
     if (S->renumber_interval > 0
         && (s->n_builds - 1) % S->renumber_interval == 0) {
         memcpy(s->perm, s->grid.order, sizeof *s->perm * P->n);
-        mps_particles_permute(s, s->perm, P->n);
+        TRY(mps_particles_permute(s, s->perm, P->n));
         TRY(cells_build(&s->grid, P->dim, P->x, P->n, cell_h, s->box_lo,
                         s->box_hi));
     }

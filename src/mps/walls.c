@@ -138,8 +138,8 @@ void mps_wall_forces(const struct mps_solver *s, int npatch, double *force)
     }
 }
 
-/* Delete the particles of patches removed by time t; returns how many. */
-static int remove_patches(struct mps_solver *s, double t)
+/* Delete the particles of patches removed by time t; *gone: how many. */
+static int remove_patches(struct mps_solver *s, double t, int *gone_out)
 {
     struct mps_particles *P = &s->P;
     const struct wall_motion *wm = s->S.wall_motion;
@@ -151,11 +151,12 @@ static int remove_patches(struct mps_solver *s, double t)
             s->perm[m++] = i;
     }
     int gone = P->n - m;
+    *gone_out = gone;
     if (gone) {
-        mps_particles_permute(s, s->perm, m);
         s->rebuild = 1;   /* the list and the grid index the old set */
+        return mps_particles_permute(s, s->perm, m);
     }
-    return gone;
+    return SIM_OK;
 }
 
 int mps_walls_begin_step(struct mps_solver *s, double dt)
@@ -166,7 +167,8 @@ int mps_walls_begin_step(struct mps_solver *s, double dt)
     if (!s->walls_move)
         return SIM_OK;
     const double t = s->time;
-    int gone = remove_patches(s, t);
+    int gone;
+    TRY(remove_patches(s, t, &gone));
     if (gone)
         log_info("    t = %g s: %d wall/dummy particle(s) of removed "
                  "patches deleted", t, gone);

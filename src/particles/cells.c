@@ -171,25 +171,6 @@ void cells_free(struct cell_grid *g)
     memset(g, 0, sizeof *g);
 }
 
-void cells_permute(void *a, size_t size, const int32_t *perm, int n,
-                   void *scratch)
-{
-    char *dst = scratch;
-    const char *src = a;
-    if (size == 8) {
-        const double *s = a;
-        double *d = scratch;
-#pragma omp parallel for schedule(static)
-        for (int i = 0; i < n; i++)
-            d[i] = s[perm[i]];
-    } else {
-#pragma omp parallel for schedule(static)
-        for (int i = 0; i < n; i++)
-            memcpy(dst + (size_t)i * size, src + (size_t)perm[i] * size, size);
-    }
-    memcpy(a, scratch, (size_t)n * size);
-}
-
 /* Relative widening of the cell ranges, far above the round-off of the
  * cell coordinates, so that no pair within the cut-off is missed. */
 #define RANGE_EPS 1e-9

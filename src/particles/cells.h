@@ -94,9 +94,4 @@ void cells_gather(const struct cell_grid *g, const double *x, double *xs);
  * point is outside the box (then ic is meaningless). */
 int cells_locate(const struct cell_grid *g, const double *p, int ic[3]);
 
-/* Apply a permutation to an array: new[i] = old[perm[i]] for n items of
- * `size` bytes each. scratch holds n*size bytes. */
-void cells_permute(void *a, size_t size, const int32_t *perm, int n,
-                   void *scratch);
-
 #endif

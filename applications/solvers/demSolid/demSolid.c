@@ -47,7 +47,7 @@ struct solid {
     struct dem_solution sol;
     void *integ;
     struct vtu_cloud cloud;
-    struct vtu_field fields[5];
+    struct vtu_field fields[STORE_MAX_FIELDS];
     const char *patch_ptrs[DEM_MAX_PATCHES];
     int dim;
 };
@@ -94,21 +94,12 @@ static int refresh_scene(struct solver *sv)
 {
     struct solid *s = (struct solid *)sv;
     struct dem *d = &s->d;
-    struct vtu_field f[5] = {
-        {"radius", VTU_FLOAT64, 1, d->r},
-        {"velocity", VTU_FLOAT64, 3, d->v},
-        {"omega", VTU_FLOAT64, 3, d->w},
-        {"group", VTU_INT32, 1, d->group},
-        {"id", VTU_INT64, 1, d->id},
-    };
-    memcpy(s->fields, f, sizeof f);
-    s->cloud = (struct vtu_cloud){.n = d->n, .points = d->x, .nfields = 5,
-                                  .fields = s->fields, .time = d->t};
+    store_cloud(&d->st, d->t, s->fields, &s->cloud);
     for (int p = 0; p < d->npatches; p++)
         s->patch_ptrs[p] = d->patch_names[p];
     s->sv.scene = (struct fo_scene){
         .time = s->sv.rt.value, .dt = s->sv.rt.dt, .step = s->sv.rt.step,
-        .dim = s->dim, .cloud_name = "dem", .cloud = &s->cloud,
+        .dim = s->dim, .cloud_name = "dem", .store = &d->st,
         .spacing = 2 * d->rmax, .patch_names = s->patch_ptrs,
         .npatches = d->npatches, .solver = d};
     if (s->sv.coupled) {
@@ -131,22 +122,21 @@ static int write_coupled_grains(struct solid *s, const char *path)
         return dem_write_grains(path, d, s->sv.rt.binary);
     }
     int a = s->cd.cs.model == COUPLING_MODEL_A;
-    struct vtu_field f[10] = {
-        {"radius", VTU_FLOAT64, 1, d->r},
-        {"velocity", VTU_FLOAT64, 3, d->v},
-        {"omega", VTU_FLOAT64, 3, d->w},
-        {"group", VTU_INT32, 1, d->group},
-        {"id", VTU_INT64, 1, d->id},
+    /* the grains' fields, then those of the coupling interval */
+    struct vtu_field f[STORE_MAX_FIELDS + 5];
+    struct vtu_cloud c;
+    store_cloud(&d->st, d->t, f, &c);
+    const struct vtu_field cpl[5] = {
         {"porosity", VTU_FLOAT64, 1, s->cd.eps},
         {"fluidVelocity", VTU_FLOAT64, 3, s->cd.uf},
         {"slipVelocity", VTU_FLOAT64, 3, s->cd.slip},
         {"drag", VTU_FLOAT64, 3, s->cd.Fapplied},
         {"", VTU_FLOAT64, 3, s->cd.fext},
     };
-    snprintf(f[9].name, sizeof f[9].name, "%s",
+    memcpy(f + c.nfields, cpl, sizeof cpl);
+    snprintf(f[c.nfields + 4].name, sizeof f[0].name, "%s",
              a ? "pressureGradientForce" : "buoyancy");
-    struct vtu_cloud c = {.n = d->n, .points = d->x, .nfields = 10,
-                          .fields = f, .time = d->t};
+    c.nfields += 5;
     return vtu_write(path, &c, s->sv.rt.binary);
 }
 

@@ -54,8 +54,8 @@ struct fluid {
     char value_names[MAX_PATCHES + 2][80];
     struct fo_value values[MAX_PATCHES + 2];
     double force[3 * MAX_PATCHES];
-    struct vtu_cloud cloud;
-    struct vtu_field fields[11];
+    struct vtu_cloud cloud;         /* fluid.vtu: a view of s.P.st      */
+    struct vtu_field fields[STORE_MAX_FIELDS];
     struct couple_fluid cf;         /* coupled runs only                 */
     struct couple_output out;
 };
@@ -158,9 +158,7 @@ static int copy_volume_fraction(const struct vtu_cloud *c, const char *path,
         return sim_error(SIM_ERR_INPUT, "%s: field 'volumeFraction' must be "
                          "Float64 with one component", path);
     const double *v = vf->data;
-    P->phi = sim_malloc(((size_t)c->n + 1) * sizeof *P->phi);
-    if (!P->phi)
-        return SIM_ERR_NOMEM;
+    TRY(mps_particles_add(P, MPS_P_PHI));
     for (size_t i = 0; i < c->n; i++) {
         if (!(v[i] > 0 && v[i] <= 1))
             return sim_error(SIM_ERR_INPUT, "%s: particle %zu has "
@@ -187,6 +185,15 @@ static int copy_cloud(struct fluid *f, const struct vtu_cloud *c,
         return sim_error(SIM_ERR_INPUT, "%s: too many particles", path);
     int n = (int)c->n;
     TRY(mps_particles_alloc(P, n, f->dim));
+    if (f->sv.coupled) {
+        /* the coupling's fields of fluid.vtu, filled by refresh_scene;
+         * registered before volumeFraction, which follows them */
+        TRY(store_add(&P->st, "porosity", "eps", VTU_FLOAT64, 1,
+                      STORE_VIEW | STORE_WRITE, &f->cf.eps));
+        TRY(store_add(&P->st, "reaction", "-V_i f_A,i of eq. (36) [N]",
+                      VTU_FLOAT64, 3, STORE_VIEW | STORE_WRITE,
+                      &f->out.out));
+    }
     memcpy(P->x, c->points, sizeof *P->x * 3 * n);
     memcpy(P->u, ve->data, sizeof *P->u * 3 * n);
     memcpy(P->p, pr->data, sizeof *P->p * n);
@@ -287,35 +294,14 @@ static int refresh_scene(struct solver *sv)
 {
     struct fluid *f = (struct fluid *)sv;
     struct mps_particles *P = &f->s.P;
-    struct vtu_field fl[8] = {
-        { "type", VTU_INT32, 1, P->type },
-        { "patch", VTU_INT32, 1, P->patch },
-        { "velocity", VTU_FLOAT64, 3, P->u },
-        { "pressure", VTU_FLOAT64, 1, P->p },
-        { "normal", VTU_FLOAT64, 3, P->normal },
-        { "id", VTU_INT64, 1, P->id },
-        { "numberDensity", VTU_FLOAT64, 1, P->nd },
-        { "freeSurface", VTU_UINT8, 1, P->fs },
-    };
-    memcpy(f->fields, fl, sizeof fl);
-    int nf = 8;
     if (f->sv.coupled) {
         /* inv_eps holds phi_i/eps_i with volume fractions */
         for (int i = 0; i < P->n; i++)
             f->cf.eps[i] = (P->phi ? P->phi[i] : 1.0) / P->inv_eps[i];
-        f->fields[nf++] = (struct vtu_field){ "porosity", VTU_FLOAT64, 1,
-                                              f->cf.eps };
         double *react;
         TRY(couple_output_reaction(&f->out, P, &react));
-        f->fields[nf++] = (struct vtu_field){ "reaction", VTU_FLOAT64, 3,
-                                              react };
-        if (P->phi) /* written so that a restart keeps it */
-            f->fields[nf++] = (struct vtu_field){ "volumeFraction",
-                                                  VTU_FLOAT64, 1, P->phi };
     }
-    f->cloud = (struct vtu_cloud){ .n = (size_t)P->n, .points = P->x,
-                                   .nfields = nf, .fields = f->fields,
-                                   .time = f->sv.rt.value };
+    store_cloud(&P->st, f->sv.rt.value, f->fields, &f->cloud);
     mps_wall_forces(&f->s, f->npatches, f->force);
     int nv = 0;
     for (int k = 0; k < f->npatches; k++, nv++) {
@@ -331,7 +317,7 @@ static int refresh_scene(struct solver *sv)
                                          .v = { f->s.Ln.n0 } };
     f->sv.scene = (struct fo_scene){
         .time = f->sv.rt.value, .dt = f->sv.rt.dt, .step = f->sv.rt.step,
-        .dim = f->dim, .cloud_name = "fluid", .cloud = &f->cloud,
+        .dim = f->dim, .cloud_name = "fluid", .store = &P->st,
         .spacing = f->dp, .patch_names = f->patch_names,
         .npatches = f->npatches, .values = f->values, .nvalues = nv,
         .solver = &f->s };

@@ -1,8 +1,10 @@
 /*
  * dem_fo.h — DEM function objects (doc/design.md C14): kineticEnergy,
- * wallForces, front, bedHeight, grainState, contacts. They read the solver's struct dem through
- * fo_scene.solver; demSolid passes dem_fo_table to fo_list_create beside
- * fo_generic_table.
+ * wallForces, front, bedHeight, grainState, contacts. Grain fields are
+ * looked up by name in fo_scene.store (grainState, kineticEnergy); what
+ * only the solver has (neighbour list, walls, patch forces, contact
+ * counts) is read from its struct dem through fo_scene.solver. demSolid
+ * passes dem_fo_table to fo_list_create beside fo_generic_table.
  */
 #ifndef MPSDEM_DEM_FO_H
 #define MPSDEM_DEM_FO_H

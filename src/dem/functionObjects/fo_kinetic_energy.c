@@ -5,6 +5,8 @@
  * plots the translational part, doc/theory.md A.12.1).
  * Columns: time, E_trans, E_rot, E_total [J], grains, contacts (grain-grain,
  * grain-wall). Keys: none beyond the schedule.
+ * The grains' fields by name (velocity, omega, mass, inverseInertia); the
+ * contact counts are the solver's.
  */
 #include "core/error.h"
 #include "dem/dem.h"
@@ -29,18 +31,27 @@ static int execute(void *data, const struct fo_scene *s, FILE *f)
 {
     (void)data;
     const struct dem *d = s->solver;
+    const void *p[4];
+    static const char *const who = "kineticEnergy";
+    TRY(store_require(s->store, who, "velocity", VTU_FLOAT64, 3, &p[0]));
+    TRY(store_require(s->store, who, "omega", VTU_FLOAT64, 3, &p[1]));
+    TRY(store_require(s->store, who, "mass", VTU_FLOAT64, 1, &p[2]));
+    TRY(store_require(s->store, who, "inverseInertia", VTU_FLOAT64, 1,
+                      &p[3]));
+    const double *v = p[0], *w = p[1], *m = p[2], *inv_i = p[3];
+    const size_t n = s->store->n;
     double et = 0, er = 0;
-    for (size_t i = 0; i < d->n; i++) {
+    for (size_t i = 0; i < n; i++) {
         double v2 = 0, w2 = 0;
         for (int a = 0; a < 3; a++) {
-            v2 += d->v[3 * i + a] * d->v[3 * i + a];
-            w2 += d->w[3 * i + a] * d->w[3 * i + a];
+            v2 += v[3 * i + a] * v[3 * i + a];
+            w2 += w[3 * i + a] * w[3 * i + a];
         }
-        et += 0.5 * d->m[i] * v2;
-        er += 0.5 * w2 / d->inv_i[i];
+        et += 0.5 * m[i] * v2;
+        er += 0.5 * w2 / inv_i[i];
     }
     fprintf(f, "%.9g %.9g %.9g %.9g %zu %ld %ld\n", s->time, et, er, et + er,
-            d->n, d->ncontacts, d->nwall_contacts);
+            n, d->ncontacts, d->nwall_contacts);
     return SIM_OK;
 }
 

@@ -22,7 +22,7 @@ static void run_fo(const struct fo_ops *ops, const char *keys, struct dem *d,
     struct dict *dd;
     assert_int_equal(dict_read_string(keys, strlen(keys), "test", &dd),
                      SIM_OK);
-    struct fo_scene s = {.time = 0.5, .solver = d};
+    struct fo_scene s = {.time = 0.5, .solver = d, .store = &d->st};
     void *data = NULL;
     assert_int_equal(ops->create(dd, &s, &data), SIM_OK);
     FILE *f = tmpfile();
@@ -124,6 +124,41 @@ static void test_bed_height(void **state)
     dem_free(&d);
 }
 
+/* grainState follows a grain by id through the removal of another (the
+ * registry compacts every field), and reports nan for an unknown id. */
+static void test_grain_state(void **state)
+{
+    (void)state;
+    struct dem d;
+    scene(&d);
+    char line[512];
+    double v[19];
+    for (int pass = 0; pass < 2; pass++) {
+        run_fo(&dem_fo_grain_state, "ids (101 7);", &d, line, sizeof line);
+        char *p = line, *end;
+        int n = 0;
+        while (n < 19 && (v[n] = strtod(p, &end), end != p))
+            n++, p = end;
+        assert_int_equal(n, 19);
+        assert_true(v[1] == 0.0127 - 1e-7 && v[3] == T1_R - 1e-7);
+        assert_true(v[4] == 0.2 && v[5] == 0 && v[9] == 10);
+        for (int k = 10; k < 19; k++)
+            assert_true(isnan(v[k]));
+        if (pass == 0) {
+            /* grain 100 (at x = 0.010) leaves the domain */
+            d.have_domain = d.remove_outside = 1;
+            double lo[3] = {0.011, -1, -1}, hi[3] = {1, 1, 1};
+            memcpy(d.dom_lo, lo, sizeof lo);
+            memcpy(d.dom_hi, hi, sizeof hi);
+            assert_int_equal(dem_check_domain(&d), 1);
+            assert_int_equal(d.n, 4);
+            assert_int_equal(d.st.n, 4);
+            assert_int_equal(d.id[0], 101);
+        }
+    }
+    dem_free(&d);
+}
+
 int main(void)
 {
     log_set_quiet(1);
@@ -131,6 +166,7 @@ int main(void)
         cmocka_unit_test(test_front_largest_cluster),
         cmocka_unit_test(test_kinetic_energy),
         cmocka_unit_test(test_bed_height),
+        cmocka_unit_test(test_grain_state),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

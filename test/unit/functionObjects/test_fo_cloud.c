@@ -32,7 +32,10 @@ static int run(const char *text, const char *cloud_name)
     struct vtu_field f = { .type = VTU_INT32, .ncomp = 1, .data = types };
     snprintf(f.name, sizeof f.name, "type");
     struct vtu_cloud c = { .n = 2, .points = pts, .nfields = 1, .fields = &f };
-    struct fo_scene s = { .cloud = &c, .cloud_name = cloud_name, .dim = 3,
+    struct store st;
+    store_init(&st, "field of the cloud");
+    assert_int_equal(store_view_cloud(&st, &c), SIM_OK);
+    struct fo_scene s = { .store = &st, .cloud_name = cloud_name, .dim = 3,
                           .dt = 0.01 };
     struct fo_list *l = NULL;
     assert_int_equal(dict_read_string(text, strlen(text), "controlDict", &d),

@@ -37,6 +37,8 @@ static int teardown(void **state)
 static double pts[12] = {0, 0, 0, 1, 2, 0, 5, 5, 5, -1, -1, -1};
 static int32_t types[4] = {0, 0, 1, 2};
 
+static struct store st;
+
 static void make_scene(struct fo_scene *s, struct vtu_cloud *c,
                        struct vtu_field *f)
 {
@@ -51,7 +53,9 @@ static void make_scene(struct fo_scene *s, struct vtu_cloud *c,
     c->nfields = 1;
     c->fields = f;
     memset(s, 0, sizeof *s);
-    s->cloud = c;
+    store_init(&st, "field of the fluid cloud");
+    assert_int_equal(store_view_cloud(&st, c), SIM_OK);
+    s->store = &st;
     s->cloud_name = "fluid";
     s->dim = 3;
     s->dt = 0.01;

@@ -51,6 +51,7 @@ struct cloud {
     int64_t *id;
     struct vtu_field f[8];
     struct vtu_cloud c;
+    struct store st;   /* what the function objects look fields up in */
 };
 
 static void grow(struct cloud *c)
@@ -98,6 +99,13 @@ static void set_field(struct vtu_field *f, const char *name,
     f->data = data;
 }
 
+/* The registry of the cloud's fields, as a solver's (particles/store.h). */
+static void views(struct cloud *c)
+{
+    store_init(&c->st, "field of the fluid cloud");
+    assert_int_equal(store_view_cloud(&c->st, &c->c), SIM_OK);
+}
+
 /* Point the vtu view at the arrays (again, after they moved). */
 static void publish(struct cloud *c)
 {
@@ -113,6 +121,7 @@ static void publish(struct cloud *c)
     c->c.points = c->x;
     c->c.nfields = 8;
     c->c.fields = c->f;
+    views(c);
 }
 
 static void cloud_free(struct cloud *c)
@@ -182,7 +191,7 @@ static const struct fo_ops *const *const tables[] = {fo_generic_table,
 static void make_scene(struct fo_scene *s, struct cloud *c)
 {
     memset(s, 0, sizeof *s);
-    s->cloud = &c->c;
+    s->store = &c->st;
     s->cloud_name = "fluid";
     s->dim = 2;
     s->dt = 1e-3;
@@ -251,7 +260,7 @@ static void renumber_last(int k, struct fo_scene *s, struct cloud *c)
 {
     if (k == 2) {
         renumber(c);
-        s->cloud = &c->c;
+        s->store = &c->st;
     }
 }
 
@@ -762,6 +771,7 @@ static void test_missing_field(void **state)
     make_scene(&s, &c);
     c.f[2] = c.f[7]; /* drop "pressure" */
     c.c.nfields = 7;
+    views(&c);
     const char *text = "functions {\n  a { type probes; "
                        "probeLocations ((0 0)); }\n}\n";
     struct dict *d;
@@ -773,7 +783,8 @@ static void test_missing_field(void **state)
     assert_int_equal(fo_list_create(fd, tables, &s, tmpdir, 0, 6, &l),
                      SIM_ERR_INPUT);
     assert_non_null(strstr(sim_error_message(), "controlDict:2"));
-    assert_non_null(strstr(sim_error_message(), "'pressure'"));
+    assert_non_null(strstr(sim_error_message(), "unknown field of the fluid "
+                           "cloud 'pressure'; valid: position type patch"));
     dict_free(d);
     cloud_free(&c);
 }

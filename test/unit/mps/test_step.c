@@ -202,8 +202,8 @@ static void test_scale_hooks(void **st)
     log_set_quiet(1);
     make_solver(&a, "cholmod", "none");
     make_solver(&b, "cholmod", "none");
-    b.P.ppe_scale = malloc((size_t)b.P.cap * sizeof *b.P.ppe_scale);
-    b.P.corr_scale = malloc((size_t)b.P.cap * sizeof *b.P.corr_scale);
+    assert_int_equal(mps_particles_add(&b.P, MPS_P_PPE_SCALE
+                                              | MPS_P_CORR_SCALE), SIM_OK);
     assert_non_null(b.P.ppe_scale);
     assert_non_null(b.P.corr_scale);
     for (int i = 0; i < b.P.cap; i++) {
@@ -256,11 +256,9 @@ static void bed_step(struct mps_solver *s, int hooks, int superficial)
     s->S.predictor = 0;   /* the PPE at the lattice, where phi/eps = 1 */
     struct mps_particles *P = &s->P;
     if (hooks) {
-        size_t c = (size_t)P->cap;
-        P->inv_eps = malloc(c * sizeof(double));
-        P->ppe_scale = malloc(c * sizeof(double));
-        P->corr_scale = malloc(c * sizeof(double));
-        P->f_ext = calloc(3 * c, sizeof(double));
+        assert_int_equal(mps_particles_add(P, MPS_P_INV_EPS | MPS_P_F_EXT
+                                              | MPS_P_PPE_SCALE
+                                              | MPS_P_CORR_SCALE), SIM_OK);
         s->S.scaled_divergence = superficial;
         assert_true(P->inv_eps && P->ppe_scale && P->corr_scale && P->f_ext);
         for (int i = 0; i < P->n; i++) {
@@ -320,12 +318,9 @@ static void test_porous_surface_test(void **st)
         struct mps_solver s;
         make_solver(&s, "cholmod", "none");
         struct mps_particles *P = &s.P;
-        P->inv_eps = malloc((size_t)P->cap * sizeof *P->inv_eps);
-        assert_non_null(P->inv_eps);
-        if (with_phi) {
-            P->phi = malloc((size_t)P->cap * sizeof *P->phi);
-            assert_non_null(P->phi);
-        }
+        assert_int_equal(mps_particles_add(P, MPS_P_INV_EPS
+                                              | (with_phi ? MPS_P_PHI : 0)),
+                         SIM_OK);
         for (int i = 0; i < P->n; i++) {
             int bed = P->x[3 * i + 1] < NY * DP / 2;
             P->inv_eps[i] = bed && !with_phi ? 2.0 : 1.0;
@@ -353,8 +348,7 @@ static void porous_step(struct mps_solver *s, const char *solver,
 {
     make_solver(s, solver, pc);
     s->S.porous_symmetric = symmetric;
-    s->P.inv_eps = malloc((size_t)s->P.cap * sizeof *s->P.inv_eps);
-    assert_non_null(s->P.inv_eps);
+    assert_int_equal(mps_particles_add(&s->P, MPS_P_INV_EPS), SIM_OK);
     for (int i = 0; i < s->P.n; i++)
         s->P.inv_eps[i] =
             1.0 / (0.7 + grad_eps * (s->P.x[3 * i] / (NX * DP) - 0.5));

@@ -44,10 +44,7 @@ static void make(struct mps_solver *s, double tau, double phi_lo)
                      0);
     assert_int_equal(mps_solver_init(s, &P, &S, DP, ls), 0);
     struct mps_particles *Q = &s->P;
-    Q->phi = malloc((size_t)Q->cap * sizeof *Q->phi);
-    Q->inv_eps = malloc((size_t)Q->cap * sizeof *Q->inv_eps);
-    assert_non_null(Q->phi);
-    assert_non_null(Q->inv_eps);
+    assert_int_equal(mps_particles_add(Q, MPS_P_PHI | MPS_P_INV_EPS), 0);
     uint64_t st = 42;
     for (int i = 0; i < Q->n; i++) {
         double eps = 1.0, phi = 1.0;

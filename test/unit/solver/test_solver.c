@@ -21,7 +21,7 @@
 
 struct toy {
     struct solver sv;
-    struct vtu_cloud cloud;
+    struct store store;     /* an empty cloud                      */
     int fail_before_step;   /* coupled: the exchange of this step fails */
     int fail_advance;       /* the advance of this step fails           */
 };
@@ -50,9 +50,10 @@ static int create(struct solver *sv)
 static int refresh_scene(struct solver *sv)
 {
     struct toy *t = (struct toy *)sv;
+    store_init(&t->store, "field of the toy cloud");
     sv->scene = (struct fo_scene){ .time = sv->rt.value, .dt = sv->rt.dt,
                                    .step = sv->rt.step, .dim = 3,
-                                   .cloud_name = "toy", .cloud = &t->cloud,
+                                   .cloud_name = "toy", .store = &t->store,
                                    .spacing = 1 };
     return SIM_OK;
 }
