@@ -14,7 +14,7 @@
 void dem_init(struct dem *d)
 {
     memset(d, 0, sizeof *d);
-    nlist_init(&d->nl, 0);
+    neighbour_half_init(&d->nl, 0);
     d->gravity[2] = -9.81;
     d->omp_min = DEM_OMP_MIN;
 }
@@ -27,7 +27,7 @@ void dem_free(struct dem *d)
         for (int k = 0; k < DEM_MAX_PATCHES; k++)
             wall_motion_free(&d->motions[k]);
     free(d->motions);
-    nlist_free(&d->nl);
+    neighbour_half_free(&d->nl);
     free(d->hist); free(d->whist); free(d->pair_c); free(d->wall_chi);
     free(d->wstart); free(d->wlist); free(d->wgrain);
     free(d->old_start); free(d->old_j); free(d->old_h);
@@ -131,6 +131,18 @@ static void pair_constants(struct dem *d)
     }
 }
 
+/* The contact candidates at x; non-finite positions mean the integration
+ * blew up, which is what the user must read. */
+static int build_list(struct dem *d, const double *x)
+{
+    int rc = neighbour_half_build(&d->nl, d->n, x, d->r);
+    if (rc == SIM_ERR_NUMERIC)
+        return sim_error(SIM_ERR_NUMERIC, "grain positions are not finite: "
+                         "the integration blew up (a time step above the "
+                         "contact stability limit?)");
+    return rc;
+}
+
 static int reserve_histories(struct dem *d)
 {
     if (d->n + 1 > d->wchi_cap) {
@@ -197,7 +209,7 @@ int dem_setup(struct dem *d)
     if (d->nl.skin <= 0)
         d->nl.skin = 0.2 * d->rmax;   /* decision: 10 % of a diameter */
     dem_walls_at(d, d->t);
-    TRY(nlist_build(&d->nl, d->n, d->x, d->r));
+    TRY(build_list(d, d->x));
     d->stats.rebuilds++;
     TRY(reserve_histories(d));
     pair_constants(d);
@@ -255,11 +267,11 @@ static int rebuild(struct dem *d, const double *x, const size_t *map,
         ostart[++row] = k;
     }
     (void)old_n;
-    int rc = nlist_build(&d->nl, d->n, x, d->r);
+    int rc = build_list(d, x);
     if (rc == SIM_OK)
         rc = reserve_histories(d);
     if (rc == SIM_OK) {
-        nlist_carry(&d->nl, ostart, oj, row, oh, 3, d->hist);
+        neighbour_half_carry(&d->nl, ostart, oj, row, oh, 3, d->hist);
         pair_constants(d);
         rc = wall_candidates(d);
     }
@@ -274,7 +286,7 @@ int dem_rebuild_neighbours(struct dem *d)
 
 int dem_update_neighbours(struct dem *d, const double *x)
 {
-    if (!nlist_stale(&d->nl, d->n, x))
+    if (!neighbour_half_stale(&d->nl, d->n, x))
         return SIM_OK;
     return rebuild(d, x, NULL, d->n);
 }

@@ -1,7 +1,8 @@
 /*
  * dem.h — the DEM library: spheres with translation and rotation (doc/theory.md
  * A.6, eqs. 17-18), contact laws assembled from sub-models (contact.h),
- * analytic walls (wall.h), a Verlet-skin neighbour list (nlist.h), and time
+ * analytic walls (wall.h), a Verlet-skin half neighbour list with contact
+ * history (particles/neighbour_half.h), and time
  * integrators selected by name (integrator.h).
  *
  * Storage is structure-of-arrays; vectors are interleaved (3 doubles per
@@ -24,9 +25,12 @@
 #include <stdint.h>
 
 #include "dem/contact/contact.h"
-#include "dem/neighbour/nlist.h"
 #include "dem/walls/wall.h"
+#include "particles/neighbour_half.h"
 #include "particles/store.h"
+
+/* Loops over fewer grains than this run on one thread. */
+#define DEM_OMP_MIN 2000
 
 #define DEM_MAX_PATCHES 64
 
@@ -83,7 +87,7 @@ struct dem {
     int have_domain, remove_outside;
     double dom_lo[3], dom_hi[3];
     /* neighbours and contact history */
-    struct dem_nlist nl;
+    struct neighbour_half nl;
     double *hist;                 /* 3 per candidate pair                   */
     double *pair_c;               /* 2 per pair: chi, m* (constant while
                                      the list lives)                       */
@@ -128,15 +132,21 @@ struct dem {
      * 0 for a slot not in contact (doc/theory.md A.6). */
     const double *spring_in;
     double *spring_rate;
-    /* Slip phases (arkode; same slot layout, dem_forces.c): slip_mode
-     * marks the slots found sliding at the last committing evaluation
-     * (which updates it); while set and the spring is still loaded the
-     * slot slides. slip_g, when set, receives per slot the switching
-     * function: s^.v^t in a slip phase, 1 - |F^t|/(mu |F^n|) - 1e-7
-     * in stick, HUGE_VAL out of contact; its zero from above starts or
-     * ends a phase, an event the integrator locates. */
+    /* Slip phases (arkode; same slot layout, dem_forces.c,
+     * doc/theory.md A0-24): slip_mode marks the slots found sliding at
+     * the last committing evaluation (which updates it, the slipping ones
+     * with dem_slip_rates); while set the slot slides. slip_g, when set,
+     * receives per slot the switching function (dem_forces.c slip_after,
+     * dem_slip_rates): in stick 1 - (the larger of the stick force and
+     * the spring's force)/(mu |F^n|), in slip positive while the stick
+     * force from the spring at the limit would be outside the cone or the
+     * spring would leave it; HUGE_VAL out of contact. Its zero from above
+     * starts or ends a phase, an event the integrator locates. slip_fn,
+     * when set, receives F^n (0 out of contact): where it changes sign the
+     * limit mu |F^n| has a kink, also an event. */
     unsigned char *slip_mode;
     double *slip_g;
+    double *slip_fn;
     /* acc, alpha, cpl.fd and the histories are those of the current x, v,
      * w (set by a committing dem_forces); cleared by every change from
      * outside the integrator (dem_setup, grain removal, a new coupling
@@ -170,6 +180,19 @@ int dem_setup(struct dem *d);
 int dem_forces(struct dem *d, double t, const double *x, const double *v,
                const double *w, double tau, int commit, double *acc,
                double *alpha);
+
+/* Slip phases (arkode): for every slot with mode set, in contact, the
+ * second condition that keeps it sliding (doc/theory.md A0-24), the rate
+ * D of kt |s| - mu |F^n| along the stick flow from the spring at the
+ * limit, made dimensionless (D/(mu |F^n| omega_n)): g[slot] becomes
+ * max(g[slot], D) (g may be NULL) and mode_next[slot] is set where D > 0
+ * (mode_next may be NULL). x, v, w, acc: the state and the accelerations
+ * of dem_forces at it; spring: the springs in the layout of spring_in
+ * (their directions are used). Returns SIM_OK. */
+int dem_slip_rates(struct dem *d, const double *x, const double *v,
+                   const double *w, const double *acc, const double *spring,
+                   const unsigned char *mode, double *g,
+                   unsigned char *mode_next);
 
 /* Put the moving and removed walls where their motions have them at time
  * t (position, velocity, removal). dem_forces does it at its time, and

@@ -81,29 +81,20 @@ static inline void spring_rate_pair(const struct contact_geom *g,
         rate[a] = g->vt[a] - g->n[a] * sdn;
 }
 
-/* Slip phases (arkode, dem.h slip_mode): a contact found sliding at the
- * last accepted state keeps sliding while its spring is still loaded
- * (s^.v^t > 0), the limit of the slider as the step goes to zero; the law
- * is then given a spring of 1 m along s^, far beyond the slider's reach
+/* Slip phases (arkode, dem.h slip_mode; doc/theory.md A0-24): a contact
+ * found sliding at the last committing evaluation slides for the whole
+ * step (its end is an event the integrator locates); the law is then
+ * given a spring of 1 m along s^, far beyond the slider's reach
  * (kt x 1 m >> mu F^n for any overlap << 1 m), so that it returns the
- * sliding force and the spring at the limit whatever the state's length.
- * slip_g holds the switching functions whose zeros from above are the
- * start (|F^t| reaches mu |F^n|) and the end (s^.v^t falls through 0) of
- * a phase: events the integrator locates, to change the phase and put
- * the spring at the limit there. */
+ * sliding force -mu |F^n| s^ and the spring at the limit whatever the
+ * state's length. */
 static inline const double *slip_spring(const struct dem *d, size_t slot,
-                                        const double *hs, const double *vt,
-                                        int commit, double *buf)
+                                        const double *hs, double *buf)
 {
     if (!d->slip_mode || !d->slip_mode[slot])
         return hs;
     double s2 = hs[0] * hs[0] + hs[1] * hs[1] + hs[2] * hs[2];
-    double sv = hs[0] * vt[0] + hs[1] * vt[1] + hs[2] * vt[2];
-    /* a committing evaluation puts the spring of a slipping slot at the
-     * limit even where its phase ends (sv <= 0): the state's spring has
-     * been integrated with v^t since the last projection while the limit
-     * mu |F^n|/kt moved, so it is not at the limit there */
-    if (!(s2 > 0) || !(sv > 0 || commit))
+    if (!(s2 > 0))
         return hs;
     double k = 1.0 / sqrt(s2);
     for (int a = 0; a < 3; a++)
@@ -111,28 +102,62 @@ static inline const double *slip_spring(const struct dem *d, size_t slot,
     return buf;
 }
 
-static inline void slip_after(struct dem *d, size_t slot, const double *hs,
+/* The state's spring on the tangent plane with its length, as the law
+ * rotates it (tangential_coulomb.c). */
+static inline void tangent_spring(const double *n, const double *h,
+                                  double *s)
+{
+    double hn = h[0] * n[0] + h[1] * n[1] + h[2] * n[2];
+    double h2 = h[0] * h[0] + h[1] * h[1] + h[2] * h[2];
+    double s2 = h2 - hn * hn;
+    double k = hn != 0 && s2 > 0 ? sqrt(h2 / s2) : 1.0;
+    for (int a = 0; a < 3; a++)
+        s[a] = k * (h[a] - hn * n[a]);
+}
+
+/* Switching functions (dem.h slip_g), F^n (slip_fn) and, on a committing
+ * evaluation, the phase found there. In stick the cone of
+ * tangential_coulomb.c with the uncapped stick force,
+ *   g = 1 - max(|kt s + eta^t v^t|, kt |s|/sqrt(CONTACT_SPRING_CONE))/F_max
+ * (F_max = mu |F^n|; g <= 0 exactly where the law slides, so the start of
+ * slip is a zero from above); in slip the first of the two conditions
+ * that keep it sliding, the stick force from the spring at the limit
+ * outside the cone,
+ *   g = (|F_max s^ + eta^t v^t| - F_max)/F_max,
+ * the second (the spring would leave the cone) is added by
+ * dem_slip_rates, which needs the accelerations. */
+static inline void slip_after(struct dem *d, size_t slot, const double *n,
+                              const double *hs,
                               const struct contact_result *res,
                               const double *vt, int commit)
 {
+    if (d->slip_fn)
+        d->slip_fn[slot] = res->fn;
+    int upd = commit && d->slip_mode;
+    if (!d->slip_g && !upd)
+        return;
     int mode = d->slip_mode && d->slip_mode[slot];
     double fmax = d->law.c.mu * fabs(res->fn);
-    double fl = sqrt(res->ft[0] * res->ft[0] + res->ft[1] * res->ft[1]
-                     + res->ft[2] * res->ft[2]);
-    double s2 = hs[0] * hs[0] + hs[1] * hs[1] + hs[2] * hs[2];
-    double sv = hs[0] * vt[0] + hs[1] * vt[1] + hs[2] * vt[2];
-    if (d->slip_g) {
-        if (mode)   /* the end of the phase: the spring stops loading */
-            d->slip_g[slot] = s2 > 0 ? sv / sqrt(s2) : 1.0;
-        else        /* its start: |F^t| reaches mu |F^n| (within 1e-7,
-                       which the commit below counts as sliding) */
-            d->slip_g[slot] = fmax > 0 ? 1.0 - fl / fmax - 1e-7 : 1.0;
+    double s[3], q[3], e = res->eta_t;
+    tangent_spring(n, hs, s);
+    double sl = sqrt(s[0] * s[0] + s[1] * s[1] + s[2] * s[2]), g;
+    if (mode) {
+        double k = sl > 0 ? fmax / sl : 0.0;
+        for (int a = 0; a < 3; a++)
+            q[a] = k * s[a] + e * vt[a];
+        double ql = sqrt(q[0] * q[0] + q[1] * q[1] + q[2] * q[2]);
+        g = fmax > 0 ? (ql - fmax) / fmax : (ql > 0 ? 1.0 : -1.0);
+    } else {
+        for (int a = 0; a < 3; a++)
+            q[a] = res->kt * s[a] + e * vt[a];
+        double ql = sqrt(q[0] * q[0] + q[1] * q[1] + q[2] * q[2]);
+        double fe = res->kt * sl / sqrt(CONTACT_SPRING_CONE);
+        g = fmax > 0 ? 1.0 - (ql > fe ? ql : fe) / fmax : 1.0;
     }
-    if (commit && d->slip_mode)   /* a phase that has stopped loading has
-                                     ended (the spring is put at the limit
-                                     by this commit) */
-        d->slip_mode[slot] = fmax > 0 && fl >= fmax * (1 - 1e-6)
-                             && !(mode && !(sv > 0));
+    if (d->slip_g)
+        d->slip_g[slot] = g;
+    if (upd)   /* dem_slip_rates may still keep a slipping slot sliding */
+        d->slip_mode[slot] = fmax > 0 && (mode ? g > 0 : g <= 0);
 }
 
 /* A slot out of contact: no slip phase; its switching function is
@@ -142,6 +167,8 @@ static inline void slip_open(struct dem *d, size_t slot, int commit)
 {
     if (d->slip_g)
         d->slip_g[slot] = HUGE_VAL;
+    if (d->slip_fn)
+        d->slip_fn[slot] = 0;
     if (commit && d->slip_mode)
         d->slip_mode[slot] = 0;
 }
@@ -203,7 +230,7 @@ static void pair_row(struct dem *d, size_t i, const double *x, const double *v,
         const double *hs = d->spring_in ? &d->spring_in[3 * p]
                                         : &d->hist[3 * p];
         double sb[3];
-        const double *hl = slip_spring(d, p, hs, g.vt, commit, sb);
+        const double *hl = slip_spring(d, p, hs, sb);
         if (fused)
             contact_eval_fused(&d->law, &g, hl, tau, hn, &res);
         else
@@ -213,7 +240,7 @@ static void pair_row(struct dem *d, size_t i, const double *x, const double *v,
         if (d->spring_rate)
             spring_rate_pair(&g, hs, inv, &v[3 * i], &v[3 * j],
                              &d->spring_rate[3 * p]);
-        slip_after(d, p, hs, &res, g.vt, commit);
+        slip_after(d, p, g.n, hs, &res, g.vt, commit);
         double tc[3];
         cross3(g.n, res.ft, tc);
         for (int a = 0; a < 3; a++) {
@@ -263,8 +290,7 @@ static void wall_row(struct dem *d, size_t i, const double *x, const double *v,
         const double *hs = d->spring_in ? &d->spring_in[wk + hk]
                                         : &d->whist[hk];
         double sb[3];
-        const double *hl = slip_spring(d, (wk + hk) / 3, hs, g.vt, commit,
-                                        sb);
+        const double *hl = slip_spring(d, (wk + hk) / 3, hs, sb);
         if (fused)
             contact_eval_fused(&d->law, &g, hl, tau, hn, &res);
         else
@@ -275,7 +301,7 @@ static void wall_row(struct dem *d, size_t i, const double *x, const double *v,
                                  the grain's motion on a curved wall, left
                                  to the projection at accepted steps */
             memcpy(&d->spring_rate[wk + hk], g.vt, sizeof g.vt);
-        slip_after(d, (wk + hk) / 3, hs, &res, g.vt, commit);
+        slip_after(d, (wk + hk) / 3, g.n, hs, &res, g.vt, commit);
         double tc[3];
         cross3(g.n, res.ft, tc);
         int pa = d->walls[wl].patch;
@@ -378,4 +404,159 @@ int dem_forces(struct dem *d, double tm, const double *x, const double *v,
     d->omega2_max = om2;
     d->stats.fevals++;
     return finish(d, v, d->tbuf, d->tbuf + 3 * n, acc, alpha);
+}
+
+/* kt |s| - mu |F^n| of a contact of overlap delta and approach speed vn
+ * whose spring has length sl: the spring's distance to the cone. */
+static double cone_gap(const struct dem *d, struct contact_geom *g,
+                       double delta, double vn, double sl)
+{
+    double fel, kn, kt, eta_n, eta_t;
+    g->delta = delta;
+    g->vn = vn;
+    d->law.normal->eval(&d->law.c, g, &fel, &kn, &kt);
+    d->law.damping->eval(&d->law.c, g, kn, kt, &eta_n, &eta_t);
+    return kt * sl - d->law.c.mu * fabs(fel + eta_n * vn);
+}
+
+/* The second condition of a slip phase (A0-24): D, the rate of
+ * kt |s| - mu |F^n| along the stick flow (ds/dt = v^t, x, v moving with
+ * v, a) from the spring at the limit, s = (mu |F^n|/kt) s^. D > 0: the
+ * spring would leave the cone, the slider keeps sliding although s^.v^t
+ * may be < 0 (the limit shrinks faster than the spring unloads). By
+ * central differences over +-sig along the flow, sig = 1e-6 of the
+ * contact's time scales (min of 1/omega_n and delta/|vn|): truncation
+ * ~1e-12, rounding ~1e-10 relative. delta and vn come from the moved
+ * positions and velocities, so walls of any shape and pairs whose normal
+ * turns are covered alike. */
+static double slip_rate(const struct dem *d, const double *xi,
+                        const double *vi, const double *ai, double ri,
+                        const double *xj, const double *vj,
+                        const double *aj, double rj,
+                        const struct dem_wall *wall, struct contact_geom *g,
+                        const double *s, const double *vt, double fmax,
+                        double kt, double kn)
+{
+    double sl = sqrt(s[0] * s[0] + s[1] * s[1] + s[2] * s[2]);
+    if (!(sl > 0) || !(kt > 0))
+        return 0;
+    double om = sqrt(kn / g->mstar);
+    double sig = 1.0 / om, avn = fabs(g->vn);
+    if (avn * sig > g->delta)
+        sig = g->delta / avn;
+    sig *= 1e-6;
+    double gap[2];
+    for (int k = 0; k < 2; k++) {
+        double h = k ? -sig : sig, x[3], y[3], v[3], n[3], delta;
+        for (int a = 0; a < 3; a++) {
+            x[a] = xi[a] + h * vi[a];
+            v[a] = vi[a] + h * ai[a];
+        }
+        if (wall) {
+            for (int a = 0; a < 3; a++) {
+                x[a] -= h * wall->vel[a];
+                v[a] -= wall->vel[a];
+            }
+            if (!wall_contact_inline(wall, x, ri, n, &delta))
+                return 0;
+        } else {
+            double d2 = 0;
+            for (int a = 0; a < 3; a++) {
+                y[a] = xj[a] + h * vj[a] - x[a];
+                v[a] -= vj[a] + h * aj[a];
+                d2 += y[a] * y[a];
+            }
+            double dist = sqrt(d2);
+            delta = ri + rj - dist;
+            for (int a = 0; a < 3; a++)
+                n[a] = y[a] / dist;
+        }
+        double vn = v[0] * n[0] + v[1] * n[1] + v[2] * n[2], s2 = 0;
+        for (int a = 0; a < 3; a++) {
+            double sa = fmax / (kt * sl) * s[a] + h * vt[a];
+            s2 += sa * sa;
+        }
+        gap[k] = cone_gap(d, g, delta, vn, sqrt(s2));
+    }
+    return (gap[0] - gap[1]) / (2 * sig) / (fmax * om);
+}
+
+int dem_slip_rates(struct dem *d, const double *x, const double *v,
+                   const double *w, const double *acc, const double *spring,
+                   const unsigned char *mode, double *g,
+                   unsigned char *mode_next)
+{
+    size_t wk = 3 * d->nl.npairs;
+    for (size_t i = 0; i < d->n; i++) {
+        for (size_t p = d->nl.start[i]; p < d->nl.start[i + 1]; p++) {
+            if (!mode[p])
+                continue;
+            size_t j = d->nl.j[p];
+            struct contact_geom cg;
+            double dx[3], d2 = 0;
+            for (int a = 0; a < 3; a++) {
+                dx[a] = x[3 * j + a] - x[3 * i + a];
+                d2 += dx[a] * dx[a];
+            }
+            double rs = d->r[i] + d->r[j];
+            if (d2 >= rs * rs)
+                continue;
+            double dist = sqrt(d2);
+            for (int a = 0; a < 3; a++)
+                cg.n[a] = dx[a] / dist;
+            cg.rstar = d->r[i] * d->r[j] / rs;
+            cg.chi = d->pair_c[2 * p];
+            cg.mstar = d->pair_c[2 * p + 1];
+            fill_kinematics(&cg, &v[3 * i], &w[3 * i], d->r[i], &v[3 * j],
+                            &w[3 * j], d->r[j]);
+            double fel, kn, kt, eta_n, eta_t, s[3];
+            cg.delta = rs - dist;
+            d->law.normal->eval(&d->law.c, &cg, &fel, &kn, &kt);
+            d->law.damping->eval(&d->law.c, &cg, kn, kt, &eta_n, &eta_t);
+            double fmax = d->law.c.mu * fabs(fel + eta_n * cg.vn);
+            if (!(fmax > 0))
+                continue;
+            tangent_spring(cg.n, &spring[3 * p], s);
+            double vt[3] = {cg.vt[0], cg.vt[1], cg.vt[2]};
+            double r = slip_rate(d, &x[3 * i], &v[3 * i], &acc[3 * i],
+                                 d->r[i], &x[3 * j], &v[3 * j], &acc[3 * j],
+                                 d->r[j], NULL, &cg, s, vt, fmax, kt, kn);
+            if (g && r > g[p])
+                g[p] = r;
+            if (mode_next && r > 0)
+                mode_next[p] = 1;
+        }
+        for (int wl = 0; wl < d->nwalls; wl++) {
+            size_t hk = 3 * (i * (size_t)d->nwalls + (size_t)wl);
+            size_t slot = (wk + hk) / 3;
+            if (!mode[slot])
+                continue;
+            const struct dem_wall *wall = &d->walls[wl];
+            struct contact_geom cg;
+            if (!wall_contact_inline(wall, &x[3 * i], d->r[i], cg.n,
+                                     &cg.delta))
+                continue;
+            cg.rstar = d->r[i];
+            cg.mstar = d->m[i];
+            cg.chi = d->wall_chi[i];
+            fill_kinematics(&cg, &v[3 * i], &w[3 * i], d->r[i], wall->vel,
+                            NULL, 0);
+            double fel, kn, kt, eta_n, eta_t, s[3];
+            d->law.normal->eval(&d->law.c, &cg, &fel, &kn, &kt);
+            d->law.damping->eval(&d->law.c, &cg, kn, kt, &eta_n, &eta_t);
+            double fmax = d->law.c.mu * fabs(fel + eta_n * cg.vn);
+            if (!(fmax > 0))
+                continue;
+            tangent_spring(cg.n, &spring[wk + hk], s);
+            double vt[3] = {cg.vt[0], cg.vt[1], cg.vt[2]};
+            double r = slip_rate(d, &x[3 * i], &v[3 * i], &acc[3 * i],
+                                 d->r[i], NULL, NULL, NULL, 0, wall, &cg, s,
+                                 vt, fmax, kt, kn);
+            if (g && r > g[slot])
+                g[slot] = r;
+            if (mode_next && r > 0)
+                mode_next[slot] = 1;
+        }
+    }
+    return SIM_OK;
 }

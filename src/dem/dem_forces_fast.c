@@ -39,7 +39,7 @@
 int dem_forces_fast_ok(const struct dem *d, int nth)
 {
     return nth == 1 && !d->spring_in && !d->spring_rate && !d->slip_mode
-           && !d->slip_g && contact_law_is_fused(&d->law);
+           && !d->slip_g && !d->slip_fn && contact_law_is_fused(&d->law);
 }
 
 /* Pairs (and wall candidates) per block: 64 fill a few AVX registers
@@ -94,8 +94,11 @@ law_lane(double n0, double n1, double n2, double delta, double vr0,
         double f2 = -kt * t2 - eta_t * vt2;
         double fmax = mu * fabs(fn);
         double ff = f0 * f0 + f1 * f1 + f2 * f2;
-        int slide = ff > fmax * fmax;
-        double sl = sqrt(t0 * t0 + t1 * t1 + t2 * t2);
+        double ts = t0 * t0 + t1 * t1 + t2 * t2;
+        /* the cone of tangential_coulomb.c: total and elastic force */
+        int slide = (ff > fmax * fmax)
+                    | (kt * kt * ts > CONTACT_SPRING_CONE * fmax * fmax);
+        double sl = sqrt(ts);
         double fl = sqrt(ff);
         int along = (sl > 0) & (kt > 0);
         /* sliding along the spring */

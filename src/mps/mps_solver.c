@@ -165,6 +165,7 @@ int mps_solver_init(struct mps_solver *s, struct mps_particles *P,
     memset(P, 0, sizeof *P);
     /* P->n is the caller's word (a test may fill part of the room) */
     TRY(store_resize(&s->P.st, (size_t)s->P.n));
+    s->P.cap = (int)s->P.st.cap;
     s->S = *S;
     s->dp = dp;
     s->ls = ls;

@@ -1,4 +1,5 @@
-/* cells.c — see cells.h. Counting sort of particles into uniform cells. */
+/* cells.c — see cells.h. Counting sort of particles into uniform cells;
+ * the runs of cells a neighbour search visits. */
 #include "particles/cells.h"
 
 #include <math.h>
@@ -46,7 +47,7 @@ int cells_locate(const struct cell_grid *g, const double *p, int ic[3])
     ic[0] = ic[1] = ic[2] = 0;
     for (int k = 0; k < g->dim; k++) {
         double s = (p[k] - g->lo[k]) / g->h;
-        if (!(s >= 0) || s >= g->nc[k] + 1e-9 * g->nc[k] + 1e-12)
+        if (!(s >= 0) || s >= g->lim[k])
             return 0;           /* also catches NaN */
         int c = (int)s;
         ic[k] = c < g->nc[k] ? c : g->nc[k] - 1;
@@ -73,6 +74,8 @@ static int set_geometry(struct cell_grid *g, int dim, double h,
             g->nc[k] = (int)m;
             ncell *= m;
         }
+        /* round-off overshoot of a point on the box's upper face */
+        g->lim[k] = g->nc[k] + 1e-9 * g->nc[k] + 1e-12;
     }
     if (ncell > 2147483647.0)
         return sim_error(SIM_ERR_INPUT, "cell grid needs %.3g cells "
@@ -81,19 +84,9 @@ static int set_geometry(struct cell_grid *g, int dim, double h,
     return SIM_OK;
 }
 
-int cells_build(struct cell_grid *g, int dim, const double *x, int n, double h,
-                const double *lo, const double *hi)
+/* Counting sort of the n points into the grid whose geometry is set. */
+static int bin(struct cell_grid *g, const double *x, int n)
 {
-    double blo[3], bhi[3];
-    if (!(h > 0) || (dim != 2 && dim != 3) || n < 0)
-        return sim_error(SIM_ERR_INPUT, "cells_build: bad cell size %g, "
-                         "dimension %d or count %d", h, dim, n);
-    if (!lo || !hi) {
-        bounding_box(dim, x, n, blo, bhi);
-        lo = blo;
-        hi = bhi;
-    }
-    TRY(set_geometry(g, dim, h, lo, hi));
     TRY(grow((void **)&g->start, &g->cap_cells, (size_t)g->ncell + 2,
              sizeof *g->start));
     TRY(grow((void **)&g->order, &g->cap_n, (size_t)n + 1, sizeof *g->order));
@@ -128,6 +121,48 @@ int cells_build(struct cell_grid *g, int dim, const double *x, int n, double h,
     return SIM_OK;
 }
 
+int cells_build(struct cell_grid *g, int dim, const double *x, int n, double h,
+                const double *lo, const double *hi)
+{
+    double blo[3], bhi[3];
+    if (!(h > 0) || (dim != 2 && dim != 3) || n < 0)
+        return sim_error(SIM_ERR_INPUT, "cells_build: bad cell size %g, "
+                         "dimension %d or count %d", h, dim, n);
+    if (!lo || !hi) {
+        bounding_box(dim, x, n, blo, bhi);
+        lo = blo;
+        hi = bhi;
+    }
+    TRY(set_geometry(g, dim, h, lo, hi));
+    return bin(g, x, n);
+}
+
+int cells_build_grid(struct cell_grid *g, int dim, const double *x, int n,
+                     double h, const double lo[3], const int nc[3],
+                     double over)
+{
+    if (!(h > 0) || (dim != 2 && dim != 3) || n < 0 || !(over >= 0))
+        return sim_error(SIM_ERR_INPUT, "cells_build_grid: bad cell size "
+                         "%g, dimension %d, count %d or overshoot %g", h,
+                         dim, n, over);
+    double ncell = 1;
+    g->dim = dim;
+    g->h = h;
+    for (int k = 0; k < 3; k++) {
+        g->lo[k] = k < dim ? lo[k] : 0;
+        g->nc[k] = k < dim ? nc[k] : 1;
+        if (g->nc[k] < 1)
+            return sim_error(SIM_ERR_INPUT, "cells_build_grid: %d cells "
+                             "along axis %d", g->nc[k], k);
+        g->lim[k] = g->nc[k] + over;
+        ncell *= g->nc[k];
+    }
+    if (ncell > 2147483647.0)
+        return sim_error(SIM_ERR_INPUT, "cell grid needs %.3g cells", ncell);
+    g->ncell = (int64_t)ncell;
+    return bin(g, x, n);
+}
+
 void cells_free(struct cell_grid *g)
 {
     free(g->start);
@@ -136,21 +171,86 @@ void cells_free(struct cell_grid *g)
     memset(g, 0, sizeof *g);
 }
 
-void cells_permute(void *a, size_t size, const int32_t *perm, int n,
-                   void *scratch)
+/* Relative widening of the cell ranges, far above the round-off of the
+ * cell coordinates, so that no pair within the cut-off is missed. */
+#define RANGE_EPS 1e-9
+
+/* Cells [*c0, *c1] along axis k that can hold a point within d of p. */
+static void axis_range(const struct cell_grid *g, int k, double p, double d,
+                       int *c0, int *c1)
 {
-    char *dst = scratch;
-    const char *src = a;
-    if (size == 8) {
-        const double *s = a;
-        double *d = scratch;
-#pragma omp parallel for schedule(static)
-        for (int i = 0; i < n; i++)
-            d[i] = s[perm[i]];
-    } else {
-#pragma omp parallel for schedule(static)
-        for (int i = 0; i < n; i++)
-            memcpy(dst + (size_t)i * size, src + (size_t)perm[i] * size, size);
+    double s0 = floor((p - d - g->lo[k]) / g->h);
+    double s1 = floor((p + d - g->lo[k]) / g->h);
+    *c0 = s0 < 0 ? 0 : s0 >= g->nc[k] ? g->nc[k] : (int)s0;
+    *c1 = s1 >= g->nc[k] - 1 ? g->nc[k] - 1 : s1 < 0 ? -1 : (int)s1;
+}
+
+/* Distance from p to the slab of cell c along axis k; the last cell is
+ * open above (cells_locate clamps overshoot into it). */
+static double slab_gap(const struct cell_grid *g, int k, double p, int c)
+{
+    double a = g->lo[k] + c * g->h, b = a + g->h;
+    if (p < a)
+        return a - p;
+    return p > b && c < g->nc[k] - 1 ? p - b : 0.0;
+}
+
+int cells_runs(const struct cell_grid *g, const double *p, double rc,
+               struct cell_run *rn, int64_t *len)
+{
+    const double d = rc * (1 + RANGE_EPS);
+    int y0, y1, z0 = 0, z1 = 0, m = 0;
+    axis_range(g, 1, p[1], d, &y0, &y1);
+    if (g->dim == 3)
+        axis_range(g, 2, p[2], d, &z0, &z1);
+    *len = 0;
+    for (int kz = z0; kz <= z1; kz++) {
+        double gz = g->dim == 3 ? slab_gap(g, 2, p[2], kz) : 0.0;
+        for (int ky = y0; ky <= y1; ky++) {
+            double gy = slab_gap(g, 1, p[1], ky);
+            double rem = d * d - gy * gy - gz * gz;
+            if (rem < 0 || m == CELLS_MAX_RUNS)
+                continue;
+            int x0, x1;
+            axis_range(g, 0, p[0], sqrt(rem), &x0, &x1);
+            if (x0 > x1)
+                continue;
+            /* The x-neighbours of one row are contiguous in cell order. */
+            int64_t base = (int64_t)g->nc[0] * (ky + (int64_t)g->nc[1] * kz);
+            rn[m].a = g->start[base + x0];
+            rn[m].b = g->start[base + x1 + 1];
+            *len += rn[m].b - rn[m].a;
+            m++;
+        }
     }
-    memcpy(a, scratch, (size_t)n * size);
+    return m;
+}
+
+int cells_runs_box(const struct cell_grid *g, const int ic[3], int reach,
+                   struct cell_run *rn, int64_t *len)
+{
+    int lo[3] = { 0, 0, 0 }, hi[3] = { 0, 0, 0 }, m = 0;
+    for (int k = 0; k < g->dim; k++) {
+        lo[k] = ic[k] > reach ? ic[k] - reach : 0;
+        hi[k] = ic[k] + reach < g->nc[k] ? ic[k] + reach : g->nc[k] - 1;
+    }
+    *len = 0;
+    for (int kz = lo[2]; kz <= hi[2]; kz++)
+        for (int ky = lo[1]; ky <= hi[1]; ky++) {
+            int64_t base = (int64_t)g->nc[0] * (ky + (int64_t)g->nc[1] * kz);
+            rn[m].a = g->start[base + lo[0]];
+            rn[m].b = g->start[base + hi[0] + 1];
+            *len += rn[m].b - rn[m].a;
+            m++;
+        }
+    return m;
+}
+
+void cells_gather(const struct cell_grid *g, const double *x, double *xs)
+{
+    const int64_t nb = g->start[g->ncell];
+#pragma omp parallel for schedule(static)
+    for (int64_t e = 0; e < nb; e++)
+        for (int k = 0; k < 3; k++)
+            xs[3 * e + k] = x[3 * (size_t)g->order[e] + k];
 }

@@ -25,9 +25,6 @@
 #include "core/error.h"
 #include "particles/cells.h"
 
-/* Relative widening of the cell ranges, far above the round-off of the
- * cell coordinates, so that no pair within the cut-off is missed. */
-#define RANGE_EPS 1e-9
 
 static int reserve_rows(struct neighbour_list *nl, int n)
 {
@@ -116,66 +113,11 @@ static double dist2(const double *a, const double *b)
          + (b[2] - a[2]) * (b[2] - a[2]);
 }
 
-/* Cells [*c0, *c1] along axis k that can hold a point within d of p. */
-static void axis_range(const struct cell_grid *g, int k, double p, double d,
-                       int *c0, int *c1)
-{
-    double s0 = floor((p - d - g->lo[k]) / g->h);
-    double s1 = floor((p + d - g->lo[k]) / g->h);
-    *c0 = s0 < 0 ? 0 : s0 >= g->nc[k] ? g->nc[k] : (int)s0;
-    *c1 = s1 >= g->nc[k] - 1 ? g->nc[k] - 1 : s1 < 0 ? -1 : (int)s1;
-}
-
-/* Distance from p to the slab of cell c along axis k; the last cell is
- * open above (cells_locate clamps round-off overshoot into it). */
-static double slab_gap(const struct cell_grid *g, int k, double p, int c)
-{
-    double a = g->lo[k] + c * g->h, b = a + g->h;
-    if (p < a)
-        return a - p;
-    return p > b && c < g->nc[k] - 1 ? p - b : 0.0;
-}
-
-enum { MAX_RUNS = 64 };
-struct run { int64_t a, b; };
-
-/* Runs of order[] holding every particle within rc of particle i (and
- * others); returns how many, their total length in *len. */
-static int runs(const struct cell_grid *g, const double *xi, double rc,
-                struct run *rn, int64_t *len)
-{
-    const double d = rc * (1 + RANGE_EPS);
-    int y0, y1, z0 = 0, z1 = 0, m = 0;
-    axis_range(g, 1, xi[1], d, &y0, &y1);
-    if (g->dim == 3)
-        axis_range(g, 2, xi[2], d, &z0, &z1);
-    *len = 0;
-    for (int kz = z0; kz <= z1; kz++) {
-        double gz = g->dim == 3 ? slab_gap(g, 2, xi[2], kz) : 0.0;
-        for (int ky = y0; ky <= y1; ky++) {
-            double gy = slab_gap(g, 1, xi[1], ky);
-            double rem = d * d - gy * gy - gz * gz;
-            if (rem < 0 || m == MAX_RUNS)
-                continue;
-            int x0, x1;
-            axis_range(g, 0, xi[0], sqrt(rem), &x0, &x1);
-            if (x0 > x1)
-                continue;
-            /* The x-neighbours of one row are contiguous in cell order. */
-            int64_t base = (int64_t)g->nc[0] * (ky + (int64_t)g->nc[1] * kz);
-            rn[m].a = g->start[base + x0];
-            rn[m].b = g->start[base + x1 + 1];
-            *len += rn[m].b - rn[m].a;
-            m++;
-        }
-    }
-    return m;
-}
-
 /* Candidates of particle i into out (room for every particle of the runs
  * is guaranteed by the caller); returns how many. */
 static int64_t scan(const struct cell_grid *g, const double *x, int i,
-                    double rc2, const struct run *rn, int nrun, int32_t *out)
+                    double rc2, const struct cell_run *rn, int nrun,
+                    int32_t *out)
 {
     int64_t m = 0;
     const double *xi = x + 3 * i;
@@ -194,7 +136,7 @@ static int scan_block(struct neighbour_list *nl, const struct cell_grid *g,
                       const double *x, double rc, int t, int a, int b,
                       int64_t *used)
 {
-    struct run rn[MAX_RUNS];
+    struct cell_run rn[CELLS_MAX_RUNS];
     const double rc2 = rc * rc;
     int64_t m = 0;
     for (int i = a; i < b; i++) {
@@ -202,7 +144,7 @@ static int scan_block(struct neighbour_list *nl, const struct cell_grid *g,
         if (g->cell_of[i] == g->ncell || (nl->rows && !nl->rows[i]))
             continue;
         int64_t len;
-        int nrun = runs(g, x + 3 * i, rc, rn, &len);
+        int nrun = cells_runs(g, x + 3 * i, rc, rn, &len);
         if ((size_t)(m + len) > nl->cap_buf[t]) {
             size_t c = (size_t)(m + len) * 2 + 1024;
             int32_t *p = sim_realloc(nl->buf[t], c * sizeof *p);

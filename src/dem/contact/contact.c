@@ -86,4 +86,6 @@ void contact_eval(const struct contact_law *law, const struct contact_geom *g,
         out->f[a] = -fn * g->n[a] + out->ft[a];
     out->fn = fn;
     out->kn = kn;
+    out->kt = kt;
+    out->eta_t = eta_t;
 }

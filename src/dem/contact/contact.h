@@ -156,7 +156,16 @@ struct contact_result {
     double mroll[3]; /* rolling torque on k [N m]                         */
     double fn;       /* normal force magnitude (signed: < 0 is tensile)   */
     double kn;       /* tangent normal stiffness [N/m]                    */
+    double kt;       /* tangential spring stiffness [N/m]                 */
+    double eta_t;    /* tangential dashpot [kg/s] (the slip phases of
+                        dem_forces.c rebuild the uncapped stick force)   */
 };
+
+/* The Coulomb cone of tangential_coulomb.c bounds the elastic force too:
+ * slip where kt^2 |delta^t|^2 > CONTACT_SPRING_CONE (mu F^n)^2. The
+ * margin (1e-12 on kt |delta^t|) keeps a spring just put at the limit,
+ * which rounding may leave an ulp outside, from counting as outside. */
+#define CONTACT_SPRING_CONE (1.0 + 2e-12)
 
 /* Registries (contact_register.c), NULL-terminated. */
 extern const struct contact_normal_ops *const contact_normal_table[];

@@ -67,8 +67,11 @@ contact_eval_fused(const struct contact_law *law,
     }
     double fmax = c->mu * fabs(fn);
     double f2 = ft[0] * ft[0] + ft[1] * ft[1] + ft[2] * ft[2];
-    if (f2 > fmax * fmax) {
-        double sl = sqrt(s[0] * s[0] + s[1] * s[1] + s[2] * s[2]);
+    double s2 = s[0] * s[0] + s[1] * s[1] + s[2] * s[2];
+    /* the cone of tangential_coulomb.c: total and elastic force */
+    if (f2 > fmax * fmax
+        || kt * kt * s2 > CONTACT_SPRING_CONE * fmax * fmax) {
+        double sl = sqrt(s2);
         double fl = sqrt(f2);
         if (sl > 0 && kt > 0) {
             for (int a = 0; a < 3; a++) {
@@ -90,6 +93,8 @@ contact_eval_fused(const struct contact_law *law,
     }
     out->fn = fn;
     out->kn = kn;
+    out->kt = kt;
+    out->eta_t = eta_t;
 }
 
 #endif

@@ -1,10 +1,18 @@
 /*
  * tangential_coulomb.c — tangential spring-dashpot with a Coulomb slider,
- * doc/theory.md A.6 eqs. (20), (22), (24):
+ * doc/theory.md A.6 eqs. (20), (22), (24) and A0-24:
  *
  *   delta^t(t) = P_n delta^t_0 |delta^t_0|/|P_n delta^t_0| + (t - t_0) v^t
- *   F^t        = -kt delta^t - eta^t v^t               if |F^t| <= mu |F^n|
+ *   F^t        = -kt delta^t - eta^t v^t    if |F^t| <= mu |F^n| and
+ *                                              kt |delta^t| <= mu |F^n|
  *              = -mu |F^n| delta^t/|delta^t|            otherwise (slider)
+ *
+ * The cone bounds the spring's force as well as the total (A0-24): with
+ * the total alone, a spring at the limit whose dashpot pulls inward
+ * (unloading, s^.v^t < 0) is held outside the cone by the dashpot until
+ * the total reaches the limit, is reset, and again: a sawtooth with a
+ * step-size dependent phase instead of the slip the spring's own motion
+ * asks for. Where eta^t = 0 both tests are one.
  *
  * delta^t_0 is the spring stored at the last accepted time t_0 (history per
  * contact pair, kept across neighbour rebuilds by the neighbour list); P_n
@@ -52,9 +60,10 @@ static void eval_coulomb(const struct contact_coeffs *c,
         ft[a] = -kt * s[a] - eta_t * g->vt[a];
     }
     double fmax = c->mu * fabs(fn);
-    double f2 = dot3(ft, ft);
-    if (f2 > fmax * fmax) {
-        double sl = sqrt(dot3(s, s));
+    double f2 = dot3(ft, ft), s2 = dot3(s, s);
+    if (f2 > fmax * fmax
+        || kt * kt * s2 > CONTACT_SPRING_CONE * fmax * fmax) {
+        double sl = sqrt(s2);
         double fl = sqrt(f2);
         if (sl > 0 && kt > 0) {
             for (int a = 0; a < 3; a++) {

@@ -14,26 +14,46 @@
  * starts inside a step starts from 0 at its onset. The transport term keeps
  * a pair spring in the turning tangent plane (dem_forces.c).
  *
- * The Coulomb slider is a phase per slot (dem.h slip_mode): it starts where
- * |F^t| reaches mu |F^n| and ends where the spring stops loading
- * (s^.v^t = 0); inside it the force is -mu |F^n| s^ whatever the state's
- * length. Both are events (slipEvents): after each accepted step the
- * switching functions (dem.h slip_g) at its end are compared with those at
- * its start; where one fell through 0, or a contact ended, the event is
- * located on exact re-integrations from the step's start (locate_event:
- * ARKode's own root finding works on its interpolant, which was not
- * accurate enough), the state taken just past it, the springs projected
- * there (which switches the phases and puts a slipping spring at the
- * limit) and the integration restarted (ERKStepReset). A phase that starts
- * and ends inside a step shows in the switching functions at the stages
- * (eval): the step is redone in quarters. Without events the slider acts
- * one step late, a first-order error outside the error test. At accepted
+ * The Coulomb slider is a phase per slot (dem.h slip_mode; doc/theory.md
+ * A0-24): it starts where the stick force |kt S + eta^t v^t| or the
+ * spring's force kt |S| reaches mu |F^n| (the cone of the contact law),
+ * and lasts while the stick force from the spring at the limit,
+ * |mu |F^n| s^ + eta^t v^t|, is still outside the cone or the spring
+ * would leave it,
+ *
+ *   D = d/dt (kt |S| - mu |F^n|) > 0   along the stick flow, at the limit
+ *
+ * (dem_slip_rates, after the accelerations are known). Ending it where
+ * the spring merely stops loading (s^.v^t = 0, until 2026-11-27) left a
+ * spring whose limit shrank faster than it unloaded outside the cone, and
+ * stick and slip chattered near gross slip (60 deg impacts). Inside a
+ * phase the force is -mu |F^n| s^ whatever the state's length; it holds
+ * for the whole step, its end being an event. Events (slipEvents): after
+ * each accepted step the switching functions (dem.h slip_g) and F^n at its
+ * end are compared with those at its start; where a switching function
+ * fell through 0, F^n changed sign (a kink of the limit) or a contact
+ * ended, the event is located on exact re-integrations from the step's
+ * start (locate_event: ARKode's own root finding works on its
+ * interpolant, which was not accurate enough), the state taken just past
+ * it, where the post-step hook has projected the springs (which puts a
+ * slipping spring at the limit) and found the phases from the state
+ * before that projection, and the integration restarted (ERKStepReset).
+ * A new slip phase whose switching function is not positive at once is a
+ * slip of zero length (the dashpot drove the stick force out of the cone
+ * against the spring): the projection was all of it, and stick goes on;
+ * such jumps come faster and faster up to the point where slip proper
+ * starts, and one within 1e-9/omega of the slot's last is taken as that
+ * point. A phase that starts and ends inside a step shows in the
+ * switching functions at the stages (eval; slots that start the step on
+ * the cone are left out): the step is redone in quarters. Without events
+ * a phase changes at the next accepted step (slipEvents off, large
+ * systems), a first-order error outside the error test. At accepted
  * steps the springs are projected as the contact law implies (rotation,
  * limit, 0 out of contact: post-step hook, one committing force
  * evaluation counted as hist_evals, after which ARKode re-evaluates the
  * right-hand side), and the phases found there take effect. When the
  * neighbour list is rebuilt the slots change: the springs are carried by
- * the list (nlist_carry) and S is re-laid out (ERKStepResize, which keeps
+ * the list (neighbour_half_carry) and S is re-laid out (ERKStepResize, which keeps
  * the step size).
  *
  * Step size: ARKode's error control with rtol and a vector atol
@@ -84,6 +104,7 @@ struct ark {
     int need_eval;             /* no evaluation since the set-up        */
     unsigned char *mode;       /* slip phase per slot (dem.h)           */
     unsigned char *mode_next;  /* as found at the last accepted state   */
+    unsigned char *mode_hi;    /* mode_next at the event (locate_event) */
     double *gcache;            /* switching functions at the state of the
                                   last projection (post_step), with the
                                   phases the step was taken with        */
@@ -93,6 +114,10 @@ struct ark {
     double *gst;               /* switching functions of the last stage */
     double *gmin;              /* their minimum over the current step's
                                   stages (g_val)                        */
+    double *fcache, *f0;       /* F^n per slot at the last projection and
+                                  at the start of the current step      */
+    double *treset;            /* time of the slot's last slip of zero
+                                  length                                */
     double hcap_until;         /* steps capped to hcap until this time  */
     size_t slot_cap;
     long events;               /* slip starts and ends located          */
@@ -127,6 +152,9 @@ static int eval(struct ark *a, double t, N_Vector y, N_Vector ydot)
     d->spring_rate = NULL;
     d->slip_mode = NULL;
     d->slip_g = NULL;
+    if (a->detect && rc == SIM_OK)
+        rc = dem_slip_rates(d, yy, yy + n3, yy + 2 * n3, yd + n3, yy + off,
+                            a->mode, a->gst, NULL);
     if (a->detect) {   /* a phase hidden inside a step shows at stages */
         size_t nslot = spring_len(d) / 3;
         for (size_t k = 0; k < nslot; k++) {
@@ -165,7 +193,7 @@ static double move_limit(struct dem *d, const double *x, const double *v)
         }
     }
     if (d->n > 1 && vmax > 0) {
-        double room = 0.5 * d->nl.skin - nlist_max_displacement(&d->nl, x);
+        double room = 0.5 * d->nl.skin - neighbour_half_max_displacement(&d->nl, x);
         h = fmin(h, fmax(room, 0.05 * d->nl.skin) / vmax);
     }
     return h;
@@ -204,11 +232,18 @@ static int post_step(realtype t, N_Vector y, void *ud)
     d->slip_g = a->gcache;   /* unchanged by the projection below: it
                                 rotates springs and rescales slipping
                                 ones only */
+    d->slip_fn = a->fcache;
     int rc = dem_forces(d, t, yy, yy + n3, yy + 2 * n3, 0.0, 1, s + n3,
                         s + 2 * n3);
     d->spring_in = NULL;
     d->slip_mode = NULL;
     d->slip_g = NULL;
+    d->slip_fn = NULL;
+    /* a slipping slot also keeps sliding where its spring would leave the
+     * cone (A0-24): that needs the accelerations just computed */
+    if (rc == SIM_OK)
+        rc = dem_slip_rates(d, yy, yy + n3, yy + 2 * n3, s + n3, yy + off,
+                            a->mode, a->gcache, a->mode_next);
     if (rc)
         return -1;
     d->stats.fevals--;
@@ -220,24 +255,32 @@ static int post_step(realtype t, N_Vector y, void *ud)
 }
 
 /* The slip switching functions of every slot (dem.h, slip_g) at (t, y)
- * with the current phases: a zero from above is the start of a slip phase
- * (stick: |F^t| reaches mu |F^n|) or its end (slip: s^.v^t falls through
- * 0). One force evaluation, counted with the projections. */
-static int eval_g(struct ark *a, double t, N_Vector y, double *gout)
+ * with the current phases, and F^n: a zero from above of g is the start
+ * of a slip phase (stick: the force reaches the cone) or its end (slip:
+ * neither the stick force nor the spring would leave it, A0-24); a sign
+ * change of F^n a kink of the limit. One force evaluation, counted with
+ * the projections. */
+static int eval_g(struct ark *a, double t, N_Vector y, double *gout,
+                  double *fout)
 {
     struct dem *d = a->d;
     size_t n3 = 3 * d->n, off = spring_offset(a);
     double *yy = N_VGetArrayPointer(y), *s = N_VGetArrayPointer(a->scratch);
     d->spring_in = yy + off;
     d->slip_g = gout;
+    d->slip_fn = fout;
     d->slip_mode = a->mode;
     int rc = dem_forces(d, t, yy, yy + n3, yy + 2 * n3, 0.0, 0, s + n3,
                         s + 2 * n3);
     d->spring_in = NULL;
     d->slip_g = NULL;
+    d->slip_fn = NULL;
     d->slip_mode = NULL;
     d->stats.fevals--;
     d->stats.hist_evals++;
+    if (rc == SIM_OK)
+        rc = dem_slip_rates(d, yy, yy + n3, yy + 2 * n3, s + n3, yy + off,
+                            a->mode, gout, NULL);
     return rc;
 }
 
@@ -336,7 +379,7 @@ static int commit(struct ark *a, double t)
         return sim_error(SIM_ERR_NUMERIC, "arkode: force evaluation "
                          "failed at t = %.9g s", t);
     memcpy(a->mode, a->mode_next, spring_len(a->d) / 3);
-    if (a->detect && eval_g(a, t, a->y, a->g0))
+    if (a->detect && eval_g(a, t, a->y, a->g0, a->f0))
         return sim_error(SIM_ERR_NUMERIC, "arkode: force evaluation "
                          "failed at t = %.9g s", t);
     ARKCHECK(ERKStepReset(a->mem, t, a->y));
@@ -398,6 +441,10 @@ static int init_slots(struct ark *a, struct dem *d)
         if (!m)
             return SIM_ERR_NOMEM;
         a->mode_next = m;
+        m = sim_realloc(a->mode_hi, cap);
+        if (!m)
+            return SIM_ERR_NOMEM;
+        a->mode_hi = m;
         double *g = sim_realloc(a->gcache, cap * sizeof *g);
         if (!g)
             return SIM_ERR_NOMEM;
@@ -418,9 +465,23 @@ static int init_slots(struct ark *a, struct dem *d)
         if (!g)
             return SIM_ERR_NOMEM;
         a->gmin = g;
+        g = sim_realloc(a->fcache, cap * sizeof *g);
+        if (!g)
+            return SIM_ERR_NOMEM;
+        a->fcache = g;
+        g = sim_realloc(a->f0, cap * sizeof *g);
+        if (!g)
+            return SIM_ERR_NOMEM;
+        a->f0 = g;
+        g = sim_realloc(a->treset, cap * sizeof *g);
+        if (!g)
+            return SIM_ERR_NOMEM;
+        a->treset = g;
         a->slot_cap = cap;
     }
     memset(a->mode, 0, nr);
+    for (size_t k = 0; k < nr; k++)
+        a->treset[k] = -INFINITY;
     int use = a->p.slip_events == 1
               || (a->p.slip_events == 0 && d->n <= DEM_SLIP_EVENTS_MAX);
     a->detect = use && nr > 0 && d->law.tangential->history != 0
@@ -443,14 +504,28 @@ static int g_crossed(double g0, double g)
     return g0 > 0 && g_val(g, g0) <= 0;
 }
 
+/* The step ending at the last projection crossed an event of slot k:
+ * 1 its switching function fell through 0, 2 F^n changed sign (both in
+ * contact), 3 both. */
+static int slot_event(const struct ark *a, size_t k)
+{
+    return g_crossed(a->g0[k], a->gcache[k])
+           | 2 * (a->f0[k] * a->fcache[k] < 0);
+}
+
 /* Smallest switching function at the state of the last projection over
- * the slots flagged in set (glo[k] != 0). */
+ * the slots flagged in glo (slot_event): g, and F^n relative to its
+ * value at the step's start, positive until it changes sign. */
 static double g_min(const struct ark *a, size_t nslot)
 {
     double g = INFINITY;
-    for (size_t k = 0; k < nslot; k++)
-        if (a->glo[k] != 0)
+    for (size_t k = 0; k < nslot; k++) {
+        int ev = (int)a->glo[k];
+        if (ev & 1)
             g = fmin(g, g_val(a->gcache[k], a->g0[k]));
+        if (ev & 2)
+            g = fmin(g, a->fcache[k] / a->f0[k]);
+    }
     return g;
 }
 
@@ -486,17 +561,20 @@ static int locate_event(struct ark *a, double t0, double *t)
     size_t nslot = spring_len(a->d) / 3;
     double tlo = t0, thi = *t, ghi = INFINITY, glo = INFINITY;
     for (size_t k = 0; k < nslot; k++) {
-        a->glo[k] = g_crossed(a->g0[k], a->gcache[k]);
-        if (a->glo[k] != 0) {
-            ghi = fmin(ghi, g_val(a->gcache[k], a->g0[k]));
+        int ev = slot_event(a, k);
+        a->glo[k] = ev;
+        if (ev & 1)
             glo = fmin(glo, a->g0[k]);
-        }
+        if (ev & 2)
+            glo = fmin(glo, 1.0);
     }
+    ghi = g_min(a, nslot);
     N_VScale(1.0, a->y, a->yhi);
-    /* the start of a slip phase saturates at g = -1e-7 past the zero
-     * (the law caps |F^t|), which stalls regula falsi: bisect until two
-     * points lie before the zero, then take secants from that side,
-     * landing just past the estimate */
+    memcpy(a->mode_hi, a->mode_next, nslot);
+    /* a switching function may have a kink at the zero (the larger of
+     * two forces, F^n through 0), which stalls regula falsi: bisect
+     * until two points lie before the zero, then take secants from that
+     * side, landing just past the estimate */
     double ttol = 1e-6 * (thi - tlo), tlo2 = tlo, glo2 = glo;
     int have2 = 0;
     (void)ghi;
@@ -511,12 +589,17 @@ static int locate_event(struct ark *a, double t0, double *t)
         if (gm <= 0) {
             thi = tm, ghi = gm;
             N_VScale(1.0, a->y, a->yhi);
+            memcpy(a->mode_hi, a->mode_next, nslot);
         } else {
             tlo2 = tlo, glo2 = glo, have2 = 1;
             tlo = tm, glo = gm;
         }
     }
+    /* the state there was projected by the hook, which also found the
+     * phases (from the state before its projection: a spring just put at
+     * the limit no longer shows which way it was going) */
     N_VScale(1.0, a->yhi, a->y);
+    memcpy(a->mode_next, a->mode_hi, nslot);
     *t = thi;
     a->events++;
     return SIM_OK;
@@ -613,10 +696,14 @@ static int ark_advance(void *ctx, struct dem *d, double t_end)
         int event = 0;
         if (a->detect) {
             for (size_t k = 0; k < nslot && !event; k++)
-                event = g_crossed(a->g0[k], a->gcache[k]);
+                event = slot_event(a, k);
             int hidden = 0;
+            /* a slot that starts the step on the cone (a slip phase
+             * just ended there, g0 ~ 1e-12) is left out: it was found
+             * moving inward, and the stages' own error takes it across
+             * by O(h^2) */
             for (size_t k = 0; k < nslot && !event && !hidden; k++)
-                hidden = a->g0[k] > 0 && a->gmin[k] <= 0;
+                hidden = a->g0[k] > 1e-9 && a->gmin[k] <= 0;
             if (hidden && !event && t - t_prev > 1e-6 * t) {
                 /* a stage saw a switching function at or below 0 although
                  * both ends are above: a phase may start and end inside
@@ -634,11 +721,6 @@ static int ark_advance(void *ctx, struct dem *d, double t_end)
             }
             if (event) {
                 TRY(locate_event(a, t_prev, &t));
-                /* the projection at the event switches the phases */
-                if (post_step(t, a->y, a))
-                    return sim_error(SIM_ERR_NUMERIC, "arkode: projection "
-                                     "of the springs failed at t = %.9g s",
-                                     t);
                 flag = t < t_end ? ARK_SUCCESS : ARK_TSTOP_RETURN;
             }
         }
@@ -653,14 +735,33 @@ static int ark_advance(void *ctx, struct dem *d, double t_end)
                 ARKCHECK(ERKStepReset(a->mem, t, a->y));
                 ARKCHECK(ERKStepSetStopTime(a->mem, t_end));
             }
-            if (a->detect && eval_g(a, t, a->y, a->g0))
+            if (a->detect && eval_g(a, t, a->y, a->g0, a->f0))
+                return sim_error(SIM_ERR_NUMERIC, "arkode: force "
+                                 "evaluation failed at t = %.9g s", t);
+            /* a slip of zero length (A0-24: the dashpot drove the stick
+             * force out of the cone against the spring, and the spring
+             * put at the limit on its own side is inside again): the
+             * projection was its whole effect, stick goes on. These
+             * jumps come faster and faster as eta^t |v^t| nears
+             * 2 mu |F^n|, where the slip proper starts: one within
+             * 1e-9/omega of the slot's last is taken as that point. */
+            int zero = 0;
+            double tz = d->omega2_max > 0 ? 1e-9 / sqrt(d->omega2_max) : 0;
+            for (size_t k = 0; a->detect && k < nslot; k++)
+                if (a->mode[k] && a->g0[k] <= 0 && a->g0[k] != HUGE_VAL
+                    && !(t - a->treset[k] < tz)) {
+                    a->mode[k] = 0, zero = 1;
+                    a->treset[k] = t;
+                }
+            if (zero && eval_g(a, t, a->y, a->g0, a->f0))
                 return sim_error(SIM_ERR_NUMERIC, "arkode: force "
                                  "evaluation failed at t = %.9g s", t);
         } else if (a->detect) {
             memcpy(a->g0, a->gcache, nslot * sizeof *a->g0);
+            memcpy(a->f0, a->fcache, nslot * sizeof *a->f0);
         }
         if (flag != ARK_TSTOP_RETURN && t < t_end
-            && nlist_stale(&d->nl, d->n, yy)) {
+            && neighbour_half_stale(&d->nl, d->n, yy)) {
             long ex1, acc1, rej1;
             ERKStepGetTimestepperStats(a->mem, &ex1, &acc1, &att, &fe, &rej1);
             steps += (ex1 + acc1) - (ex0 + acc0);
@@ -716,8 +817,12 @@ static void ark_destroy(void *ctx)
     free(a->glo);
     free(a->gst);
     free(a->gmin);
+    free(a->fcache);
+    free(a->f0);
+    free(a->treset);
     free(a->mode);
     free(a->mode_next);
+    free(a->mode_hi);
     SUNContext_Free(&a->sun);
     free(a);
 }

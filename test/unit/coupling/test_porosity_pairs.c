@@ -91,10 +91,12 @@ static int64_t check_case(int dim, int ng, int np, double box_g, double box_p,
         assert_true(F.pstart[2] == F.pstart[1]);
     /* the same sizes again: no array is reallocated */
     const void *ptr[] = { F.gstart, F.gj, F.gw, F.pstart, F.pk, F.pw,
-                          F.cstart, F.cidx, F.xs, F.tcount, F.tbuf };
+                          F.X.grid.start, F.X.grid.order, F.X.xs,
+                          F.X.tcount, F.X.tbuf };
     assert_int_equal(coupling_pairs_build(&F, dim, re, ng, xg, np, xp), 0);
     const void *ptr2[] = { F.gstart, F.gj, F.gw, F.pstart, F.pk, F.pw,
-                           F.cstart, F.cidx, F.xs, F.tcount, F.tbuf };
+                           F.X.grid.start, F.X.grid.order, F.X.xs,
+                          F.X.tcount, F.X.tbuf };
     assert_memory_equal(ptr, ptr2, sizeof ptr);
     /* a second build on moved points reuses the storage */
     for (int i = 0; i < 3 * np; i++)

@@ -8,10 +8,11 @@
  *     refused with the bound;
  *   - coupling: drag evaluated each sub-step with the current velocity, its
  *     time average returned, momentum balance exact;
- *   - oblique sphere-wall impacts (10, 30 and 60 deg, mu 0.3, mindlin and
+ *   - oblique sphere-wall impacts (10 ... 80 deg, mu 0.3, mindlin and
  *     xie2025 stiffness): ARKode's rebound spin and tangential velocity
- *     converge to converged Verlet's with rtol (the springs are in the
- *     error-controlled state, slip phases located exactly);
+ *     converge with rtol to an independent reference of the same law
+ *     (oblique_reference.h; the springs are in the error-controlled
+ *     state, slip phases located exactly), Verlet's with dt;
  *   - Verlet keeps the forces between advances: N steps cost N + 1 force
  *     evaluations however they are split, with bit-identical results.
  */
@@ -24,6 +25,7 @@
 #include <cmocka.h>
 
 #include "dem_test_helpers.h"
+#include "oblique_reference.h"
 
 static double rel(double a, double b) { return fabs(a - b) / fabs(b); }
 
@@ -277,45 +279,62 @@ static void oblique(const struct dem_integrator_ops *ops,
     dem_free(&d);
 }
 
-/* ARKode's rebound against converged Verlet, for both tangential
- * stiffnesses (mindlin, the default, and xie2025, 2.8 times softer) at
- * 10 deg (sticking, slip at the end of the contact), 30 deg (slip, stick,
- * reversed slip) and 60 deg (slip nearly throughout). Reference: Verlet at
- * dt = 1e-9 and 2e-9 s extrapolated to dt = 0 (its slider is first order:
- * 2 r(1e-9) - r(2e-9)). Errors in units of the incoming tangential speed
- * v_t0 and v_t0/R. Measured (rtol 1e-4, 1e-6, 1e-8), v_t:
- *   10 deg mindlin 3.0e-3, 7.8e-4, 1.2e-5; xie2025 7.3e-4, 6.3e-5, 1.5e-6
- *   30 deg mindlin 1.4e-4, 2.3e-5, 1.4e-6; xie2025 3.0e-4, 1.2e-5, 2.7e-6
- * (before issue 15 item 3's fix, mindlin 30 deg: 1.7e-3, 2.5e-4, 7.0e-4:
- * ERKStep's degree-4 Hermite interpolant placed the reversed slip's start
- * 2 us early, and an ending slip phase left its spring off the limit).
- * At 60 deg the Verlet slider chatters between stick and slip while the
- * contact unloads (the spring at the limit, s^.v^t < 0) and Verlet itself
- * moves by 1e-3 between dt = 2e-9 and 1e-9 s with mindlin: the reference
- * is Verlet at 1e-9 s and only a loose bound is checked there (doc/theory.md A.6, test/bench/README.dem.md). */
+/* ARKode's rebound against the reference of oblique_reference.h (the
+ * same law written out for one sphere, classical Runge-Kutta with every
+ * switch located; its own error, from a halved step, is checked below
+ * 1e-10), for both tangential stiffnesses (mindlin, the default, and
+ * xie2025, 2.8 times softer) at 10 deg (stick, slip at the end of the
+ * contact), 30 deg (slip, stick, reversed slip), 45, 60 deg (slip nearly
+ * throughout, the slider sliding on while the contact unloads, A0-24) and
+ * 80 deg (gross slip). Errors in units of the incoming tangential speed
+ * v_t0 and v_t0/R; every case must converge with rtol (the rtol 1e-8
+ * error below both others) to below 1e-4 at rtol 1e-8. Verlet with the
+ * same law converges to the same reference at first order (printed, and
+ * checked to 5e-5 at dt = 1e-9 s). Measured values: doc/theory.md A.6,
+ * test/bench/README.dem.md. */
 static void test_oblique_impact_order(void **state)
 {
     (void)state;
-    const double angles[3] = {10, 30, 60};
+    const double angles[5] = {10, 30, 45, 60, 80};
     const struct contact_stiffness_ops *const st[2] = {
         &contact_stiffness_mindlin, &contact_stiffness_xie2025};
     for (int is = 0; is < 2; is++)
-        for (int ia = 0; ia < 3; ia++) {
+        for (int ia = 0; ia < 5; ia++) {
             double th = angles[ia] * M_PI / 180, vt0 = sin(th);
+            struct dem d;
+            dem_init(&d);
+            d.law.stiffness = st[is];
+            assert_int_equal(th_law(&d, &contact_normal_hertz,
+                                    &contact_damping_restitution,
+                                    &contact_tangential_coulomb,
+                                    &contact_rolling_none, 0.3, 0.9),
+                             SIM_OK);
+            double m = T1_RHO * 4.0 / 3.0 * M_PI * pow(T1_R, 3);
+            struct oref op = {
+                .m = m, .inertia = 0.4 * m * T1_R * T1_R, .r = T1_R,
+                .chi = contact_chi(&d.law.c, T1_R),
+                .ratio_t = d.law.c.ratio_t, .zeta = d.law.c.zeta,
+                .mu = d.law.c.mu};
+            dem_free(&d);
+            struct oref_out ref, ref2;
+            oblique_reference(&op, th, 1.5e-4, 50000, &ref);
+            oblique_reference(&op, th, 1.5e-4, 100000, &ref2);
+            double rerr = fmax(fabs(ref2.vt - ref.vt) / vt0,
+                               fabs(ref2.w - ref.w) * T1_R / vt0);
+            printf("  %s %g deg: reference v_t %.10f m/s, w %.7f rad/s "
+                   "(%d switches, %d sign changes of F^n; halved step: "
+                   "%.1e)\n", st[is]->name, angles[ia], ref2.vt, ref2.w,
+                   ref2.switches, ref2.fn_signs, rerr);
             struct dem_integrator_params p = th_params();
-            struct rebound r1, r2, ref;
-            p.dt = 2e-9;
-            oblique(&dem_integrator_verlet, &p, th, st[is], &r1);
-            p.dt = 1e-9;
-            oblique(&dem_integrator_verlet, &p, th, st[is], &r2);
-            ref.vt = 2 * r2.vt - r1.vt;
-            ref.w = 2 * r2.w - r1.w;
-            if (angles[ia] > 45)   /* no convergence to extrapolate */
-                ref = r2;
-            printf("  %s %g deg: verlet reference: v_t %.9f m/s, w %.6f "
-                   "rad/s; dt 1e-9 s off by %.1e, %.1e\n", st[is]->name,
-                   angles[ia], ref.vt, ref.w, fabs(r2.vt - ref.vt) / vt0,
-                   fabs(r2.w - ref.w) * T1_R / vt0);
+            struct rebound rv;
+            double evv[2];
+            for (int k = 0; k < 2; k++) {
+                p.dt = k ? 1e-9 : 2e-9;
+                oblique(&dem_integrator_verlet, &p, th, st[is], &rv);
+                evv[k] = fabs(rv.vt - ref2.vt) / vt0;
+                printf("    verlet dt %g s: v_t error %.2e, w error %.2e\n",
+                       p.dt, evv[k], fabs(rv.w - ref2.w) * T1_R / vt0);
+            }
             double ev[3], ew[3];
             const double rtols[3] = {1e-4, 1e-6, 1e-8};
             for (int k = 0; k < 3; k++) {
@@ -326,20 +345,17 @@ static void test_oblique_impact_order(void **state)
                 p.atol_v = rtols[k];
                 p.atol_w = rtols[k] * 1e3;
                 oblique(&dem_integrator_arkode, &p, th, st[is], &ra);
-                ev[k] = fabs(ra.vt - ref.vt) / vt0;
-                ew[k] = fabs(ra.w - ref.w) * T1_R / vt0;
-                printf("    arkode rtol %g: v_t %.9f, w %.6f; error %.2e, "
+                ev[k] = fabs(ra.vt - ref2.vt) / vt0;
+                ew[k] = fabs(ra.w - ref2.w) * T1_R / vt0;
+                printf("    arkode rtol %g: v_t %.10f, w %.7f; error %.2e, "
                        "%.2e; %ld steps, %ld evaluations\n", rtols[k],
                        ra.vt, ra.w, ev[k], ew[k], ra.steps, ra.evals);
             }
-            if (angles[ia] < 45) {
-                /* converges with rtol, to the reference's accuracy */
-                assert_true(ev[1] < ev[0] && ew[1] < ew[0]);
-                assert_true(ev[2] < ev[1] && ew[2] < ew[1]);
-                assert_true(ev[2] < 1e-4 && ew[2] < 1e-4);
-            } else {
-                assert_true(ev[2] < 5e-3 && ew[2] < 5e-3);
-            }
+            assert_true(rerr < 1e-10);
+            assert_true(evv[1] < 5e-5);
+            assert_true(ev[2] < ev[1] && ev[2] < ev[0]);
+            assert_true(ew[2] < ew[1] && ew[2] < ew[0]);
+            assert_true(ev[2] < 1e-4 && ew[2] < 1e-4);
         }
 }
 

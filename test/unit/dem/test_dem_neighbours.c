@@ -1,5 +1,6 @@
 /*
- * test_nlist.c — the cell + Verlet-skin neighbour list against an O(N^2)
+ * test_dem_neighbours.c — DEM's contact candidates (the half list of
+ * particles/neighbour_half.h, through struct dem) against an O(N^2)
  * brute-force search (SWIFT test27cells style), the skin guarantee, history
  * carry-over across rebuilds and grain removal, and the threaded force loop
  * against a brute-force pair loop.
@@ -43,7 +44,7 @@ static void random_cloud(struct dem *d, size_t n, unsigned seed)
     assert_int_equal(dem_setup(d), SIM_OK);
 }
 
-static int in_list(const struct dem_nlist *nl, size_t i, size_t j)
+static int in_list(const struct neighbour_half *nl, size_t i, size_t j)
 {
     if (i > j) { size_t t = i; i = j; j = t; }
     for (size_t p = nl->start[i]; p < nl->start[i + 1]; p++)
@@ -93,13 +94,13 @@ static void test_skin_guarantee(void **state)
     unsigned s = 3;
     for (size_t k = 0; k < 3 * d.n; k++)
         d.x[k] += 0.49 * d.nl.skin / sqrt(3.0) * (2 * urand(&s) - 1);
-    assert_false(nlist_stale(&d.nl, d.n, d.x));
+    assert_false(neighbour_half_stale(&d.nl, d.n, d.x));
     for (size_t i = 0; i < d.n; i++)
         for (size_t j = i + 1; j < d.n; j++)
             if (dist(d.x, i, j) < d.r[i] + d.r[j])
                 assert_true(in_list(&d.nl, i, j));
     d.x[0] += 0.6 * d.nl.skin;
-    assert_true(nlist_stale(&d.nl, d.n, d.x));
+    assert_true(neighbour_half_stale(&d.nl, d.n, d.x));
     dem_free(&d);
 }
 
