@@ -66,7 +66,7 @@ const struct model_choice mps_choices[] = {
     { "system/mpsSchemes", "collision", TABLE(mps_collision_table) },
     { "system/mpsSchemes", "shifting", TABLE(mps_shifting_table) },
     { "system/mpsSchemes", "dummyPressure", TABLE(dummy_table) },
-    { "constant/soilProperties", "model", TABLE(soil_model_table) },
+    { "constant/soilProperties", "soilModel", TABLE(soil_model_table) },
     { "constant/soilProperties", "frictionWeight",
       TABLE(soil_friction_weight_table) },
     { NULL, NULL, NULL }
