@@ -46,6 +46,8 @@
 #include "particles/store.h"
 
 struct mps_kernel_ops;
+struct mps_soil;
+struct soil_props;
 struct mps_stabiliser_ops;
 
 enum { MPS_FLUID = 0, MPS_WALL = 1, MPS_DUMMY = 2 };
@@ -92,6 +94,9 @@ struct mps_particles {
                          holds phi_i dp^d of fluid (genParticles
                          grainVolume scale); the coupling then weighs
                          neighbours by phi_j/eps_j in inv_eps            */
+    int32_t *phase;   /* NULL (no soil) or n: 1 soil, 0 water and walls  */
+    double *accel;    /* NULL (no soil) or 3n: acceleration of the last
+                         step [m/s^2], which the soil friction (10) reads */
 };
 
 struct mps_settings {
@@ -132,6 +137,9 @@ struct mps_settings {
                                        ppe_scale u* (Model B: eps u*,
                                        A0-04 b) and ppe_scale scales only
                                        its density term                 */
+    /* constant/soilProperties (set by the application when the particles
+     * hold soil): NULL, or the soil model (doc/theory.md K, soil.c)    */
+    const struct soil_props *soil;
 };
 
 /* Wall-clock seconds per phase (accumulated) and the last PPE numbers. */
@@ -190,6 +198,7 @@ struct mps_solver {
     struct linsolve *ls;            /* owned                             */
     struct linsolve_stats last;
     struct mps_timers t;
+    struct mps_soil *soil;          /* NULL without soil (soil.c)        */
 };
 
 /* Take ownership of the particles in P (arrays allocated with capacity
@@ -220,6 +229,7 @@ enum {
     MPS_P_INV_EPS = 1u << 0, MPS_P_F_EXT = 1u << 1,
     MPS_P_PPE_SCALE = 1u << 2, MPS_P_CORR_SCALE = 1u << 3,
     MPS_P_PHI = 1u << 4,   /* "volumeFraction", written to fluid.vtu */
+    MPS_P_SOIL = 1u << 5,  /* "phase" and "acceleration", written     */
 };
 int mps_particles_add(struct mps_particles *P, unsigned which);
 void mps_particles_free(struct mps_particles *P);

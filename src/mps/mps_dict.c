@@ -20,6 +20,7 @@
 #include "core/select.h"
 #include "mps/kernel/kernel.h"
 #include "mps/mps.h"
+#include "mps/soil/soil.h"
 #include "mps/stabiliser/stabiliser.h"
 
 /* The choices without ops (core/select.h), in the order of their enums
@@ -65,6 +66,9 @@ const struct model_choice mps_choices[] = {
     { "system/mpsSchemes", "collision", TABLE(mps_collision_table) },
     { "system/mpsSchemes", "shifting", TABLE(mps_shifting_table) },
     { "system/mpsSchemes", "dummyPressure", TABLE(dummy_table) },
+    { "constant/soilProperties", "soilModel", TABLE(soil_model_table) },
+    { "constant/soilProperties", "frictionWeight",
+      TABLE(soil_friction_weight_table) },
     { NULL, NULL, NULL }
 };
 

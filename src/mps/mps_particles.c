@@ -70,6 +70,12 @@ int mps_particles_add(struct mps_particles *P, unsigned which)
     if ((which & MPS_P_PHI) && !P->phi)
         TRY(store_add(st, "volumeFraction", "fluid volume / dp^d",
                       VTU_FLOAT64, 1, STORE_WRITE, &P->phi));
+    if ((which & MPS_P_SOIL) && !P->phase) {
+        TRY(store_add(st, "phase", "1 soil, 0 water and walls", VTU_INT32,
+                      1, STORE_WRITE, &P->phase));
+        TRY(store_add(st, "acceleration", "of the last step [m/s^2]",
+                      VTU_FLOAT64, 3, STORE_WRITE, &P->accel));
+    }
     return SIM_OK;
 }
 

@@ -11,6 +11,7 @@
 #include "mps/kernel/kernel.h"
 #include "mps/mps.h"
 #include "mps/mps_impl.h"
+#include "mps/soil/soil_step.h"
 #include "mps/stabiliser/stabiliser.h"
 
 void mps_settings_default(struct mps_settings *S)
@@ -219,6 +220,7 @@ int mps_solver_init(struct mps_solver *s, struct mps_particles *P,
     s->all_rows = 0;
     s->dummy_rows = s->S.dummy_pressure == MPS_DUMMY_P_EXTRAPOLATED;
     TRY(build_list(s));
+    TRY(mps_soil_init(s));
     return SIM_OK;
 }
 
@@ -238,6 +240,7 @@ void mps_solver_free(struct mps_solver *s)
     free(s->perm); free(s->unk); free(s->b); free(s->sol);
     free(s->A.rowptr); free(s->A.col); free(s->A.val); free(s->x_ref);
     free(s->wall_dx);
+    mps_soil_free(s);
     linsolve_free(s->ls);
     memset(s, 0, sizeof *s);
 }

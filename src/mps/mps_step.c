@@ -26,6 +26,7 @@
 #include "mps/mps.h"
 #include "mps/mps_impl.h"
 #include "mps/operators.h"
+#include "mps/soil/soil_step.h"
 #include "mps/stabiliser/stabiliser.h"
 
 static void predict(struct mps_solver *s, double dt)
@@ -37,15 +38,21 @@ static void predict(struct mps_solver *s, double dt)
     mps_laplacian(&s->nl, s->w_l, P->dim, s->Ll.n0, s->Ll.lambda, 3, P->u,
                   P->inv_eps, s->rows_fluid, s->lap);
     const double *fe = P->f_ext;
+    const double *sa = s->soil ? s->soil->acc : NULL;
 #pragma omp parallel for schedule(static)
-    for (int i = 0; i < P->n; i++)
+    for (int i = 0; i < P->n; i++) {
+        const double nu = sa ? mps_soil_viscosity(s, i) : S->nu;
         for (int q = 0; q < 3; q++) {
             double a = 0;
-            if (P->type[i] == MPS_FLUID)
-                a = S->nu * s->lap[3 * i + q] + S->g[q]
+            if (P->type[i] == MPS_FLUID) {
+                a = nu * s->lap[3 * i + q] + S->g[q]
                   + (fe ? fe[3 * i + q] : 0.0);
+                if (sa)
+                    a += sa[3 * i + q];
+            }
             s->ustar[3 * i + q] = P->u[3 * i + q] + dt * a;
         }
+    }
     if (P->dim == 2)
         for (int i = 0; i < P->n; i++)
             s->ustar[3 * i + 2] = 0;
@@ -96,9 +103,12 @@ static void correct(struct mps_solver *s, double dt)
                      P->inv_eps, s->rows_fluid, s->grad);
     const double c0 = dt / s->S.rho;
     const double *cs = P->corr_scale; /* Model B: 1/eps_i (eq. 5) */
+    const double *rr = s->soil ? s->soil->ratio : NULL; /* rho_0/rho_i */
 #pragma omp parallel for schedule(static)
     for (int i = 0; i < P->n; i++) {
         double c = cs ? c0 * cs[i] : c0;
+        if (rr)
+            c *= rr[i];
         for (int q = 0; q < 3; q++)
             P->u[3 * i + q] = P->type[i] == MPS_FLUID
                             ? s->ustar[3 * i + q] - c * s->grad[3 * i + q]
@@ -126,6 +136,10 @@ int mps_step(struct mps_solver *s, double dt)
     TRY(mps_neighbours(s));
     double t1 = omp_get_wtime();
     mps_volume_exchange(s, dt);
+    if (s->soil) {
+        mps_soil_begin(s);
+        TRY(mps_soil_forces(s));
+    }
     predict(s, dt);
     TRY(s->S.collision->apply(s, dt));
     if (s->S.predictor)
@@ -143,6 +157,8 @@ int mps_step(struct mps_solver *s, double dt)
         predict_positions(s, dt, -1.0);   /* back to r^m, then r^m + dt u */
     move(s, dt);
     TRY(s->S.shifting->apply(s, dt));
+    if (s->soil)
+        mps_soil_end(s, dt);
     double t4 = omp_get_wtime();
     s->t.neighbours += t1 - t0;
     s->t.explicit_ += t2 - t1;

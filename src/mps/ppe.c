@@ -36,6 +36,7 @@
 #include "core/log.h"
 #include "mps/mps.h"
 #include "mps/mps_impl.h"
+#include "mps/soil/soil_step.h"
 #include "mps/surface_pressure.h"
 #include "particles/operators/matrix.h"
 
@@ -89,6 +90,7 @@ static int assemble(struct mps_solver *s, int m)
     const struct mps_particles *P = &s->P;
     const struct neighbour_list *nl = &s->nl;
     const double *w = s->w_l, *ie = P->inv_eps;
+    const double *rr = s->soil ? s->soil->ratio : NULL; /* rho_0/rho */
     const double c = 2.0 * P->dim / (s->Ll.n0 * s->Ll.lambda);
     const int sym = s->S.porous_symmetric;
     int64_t *rp = s->A.rowptr;
@@ -115,6 +117,8 @@ static int assemble(struct mps_solver *s, int m)
             double a = c * w[k] * (!ie ? 1.0
                                    : sym ? 2.0 * ie[i] * ie[j] / (ie[i] + ie[j])
                                          : ie[j]);
+            if (rr) /* multi-density: harmonic mean of rho_0/rho */
+                a *= 2.0 * rr[i] * rr[j] / (rr[i] + rr[j]);
             diag += a;
             if (s->unk[j] >= 0) {
                 s->A.col[pos] = s->unk[j];

@@ -21,6 +21,7 @@
 #include "core/error.h"
 #include "core/log.h"
 #include "mps/mps.h"
+#include "mps/soil/soil.h"
 #include "particles/operators/checks.h"
 
 static double gnorm(const struct mps_settings *S)
@@ -28,10 +29,19 @@ static double gnorm(const struct mps_settings *S)
     return sqrt(S->g[0] * S->g[0] + S->g[1] * S->g[1] + S->g[2] * S->g[2]);
 }
 
+/* The largest viscosity of the phases: a liquid soil's may exceed the
+ * water's (doc/theory.md K0-09). */
+static double nu_max(const struct mps_settings *S)
+{
+    if (S->soil && S->soil->model == SOIL_MODEL_LIQUID && S->soil->nu > S->nu)
+        return S->soil->nu;
+    return S->nu;
+}
+
 double mps_propose_dt(const struct mps_solver *s, double max_co)
 {
     double u = pop_max_norm3(s->P.n, s->P.u, s->P.type, MPS_FLUID);
-    return pop_stable_dt(s->dp, s->S.nu, u, gnorm(&s->S), max_co);
+    return pop_stable_dt(s->dp, nu_max(&s->S), u, gnorm(&s->S), max_co);
 }
 
 static double fluid_height(const struct mps_particles *P)
@@ -102,9 +112,9 @@ int mps_check_setup(const struct mps_solver *s, double dt, int adjustable,
     double uff = sqrt(2 * g * H);
     log_info("Stability: fluid height %g m, free-fall speed %g m/s, "
              "viscous limit dt <= %g s", H, uff,
-             0.2 * s->dp * s->dp / S->nu);
+             0.2 * s->dp * s->dp / nu_max(S));
     if (!adjustable) {
-        double co = uff * dt / s->dp, dtv = 0.2 * s->dp * s->dp / S->nu;
+        double co = uff * dt / s->dp, dtv = 0.2 * s->dp * s->dp / nu_max(S);
         log_info("Stability: deltaT %g s gives Courant number %.3g at the "
                  "free-fall speed", dt, co);
         if (dt > dtv)

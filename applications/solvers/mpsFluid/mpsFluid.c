@@ -25,6 +25,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <unistd.h>
 
 #include "core/dict.h"
 #include "core/error.h"
@@ -37,6 +38,7 @@
 #include "io/vtu.h"
 #include "functionObjects/mps_functionObjects.h"
 #include "mps/mps.h"
+#include "mps/soil/soil.h"
 #include "solver/solver.h"
 
 #define MAX_PATCHES 64
@@ -45,6 +47,8 @@ struct fluid {
     struct solver sv;               /* first: the hooks cast back        */
     struct dict *transport, *gravity, *schemes, *solution, *patches;
     struct dict *particles;         /* system/particleDict, or NULL      */
+    struct dict *soil_dict;         /* constant/soilProperties, or NULL  */
+    struct soil_props soil;         /* read when the particles hold soil */
     struct wall_motion motion[MAX_PATCHES];
     struct mps_solver s;
     int dim;
@@ -169,8 +173,67 @@ static int copy_volume_fraction(const struct vtu_cloud *c, const char *path,
     return SIM_OK;
 }
 
+/* Optional fields phase (genParticles soil regions: 1 soil, 0 the others)
+ * and acceleration (the last step's, written by a soil run: its restart
+ * goes on with it). Returns in *nsoil the soil particles. */
+static int copy_soil(const struct vtu_cloud *c, const char *path,
+                     struct mps_particles *P, int *nsoil)
+{
+    const struct vtu_field *ph = vtu_find(c, "phase"), *ac;
+    *nsoil = 0;
+    if (!ph)
+        return SIM_OK;
+    TRY(vtu_require(c, path, "phase", VTU_INT32, 1, &ph));
+    TRY(mps_particles_add(P, MPS_P_SOIL));
+    const int32_t *v = ph->data;
+    for (size_t i = 0; i < c->n; i++) {
+        if (v[i] != 0 && v[i] != 1)
+            return sim_error(SIM_ERR_INPUT, "%s: particle %zu has phase %d "
+                             "(1 soil, 0 the others)", path, i, (int)v[i]);
+        if (v[i] == 1 && P->type[i] != MPS_FLUID)
+            return sim_error(SIM_ERR_INPUT, "%s: particle %zu is a wall or "
+                             "dummy particle (type %d) with phase 1 (soil)",
+                             path, i, (int)P->type[i]);
+        P->phase[i] = v[i];
+        *nsoil += v[i] == 1;
+    }
+    ac = vtu_find(c, "acceleration");
+    if (ac) {
+        TRY(vtu_require(c, path, "acceleration", VTU_FLOAT64, 3, &ac));
+        memcpy(P->accel, ac->data, sizeof *P->accel * 3 * c->n);
+    }
+    return SIM_OK;
+}
+
+/* constant/soilProperties: required when the particles hold soil, and
+ * then the soil model of the run; a file without soil particles is
+ * reported and not read. */
+static int read_soil(struct fluid *f, int nsoil, struct mps_settings *S)
+{
+    char path[4400];
+    app_path(&f->sv.app, "constant/soilProperties", path, sizeof path);
+    int exists = access(path, R_OK) == 0;
+    if (!nsoil) {
+        if (exists)
+            log_warn("constant/soilProperties is not used: the particles "
+                     "hold no soil (genParticles regions of type soil)");
+        return SIM_OK;
+    }
+    if (!exists)
+        return sim_error(SIM_ERR_INPUT, "%s: missing: the particles hold %d "
+                         "soil particles (field 'phase' of the start state), "
+                         "whose model and density this file gives "
+                         "(doc/theory.md K)", path, nsoil);
+    TRY(app_read_dict(&f->sv.app, "constant/soilProperties", &f->soil_dict));
+    TRY(soil_props_read(f->soil_dict, &f->soil));
+    S->soil = &f->soil;
+    log_info("Soil: %d particles, model %s, rho %g kg/m^3", nsoil,
+             soil_model_table[f->soil.model]->name, f->soil.rho);
+    return SIM_OK;
+}
+
 static int copy_cloud(struct fluid *f, const struct vtu_cloud *c,
-                      const char *path, struct mps_particles *P)
+                      const char *path, struct mps_particles *P, int *nsoil)
 {
     const struct vtu_field *ty, *pa, *ve, *pr, *no, *id;
     TRY(vtu_require(c, path, "type", VTU_INT32, 1, &ty));
@@ -203,6 +266,7 @@ static int copy_cloud(struct fluid *f, const struct vtu_cloud *c,
     if (id)
         memcpy(P->id, id->data, sizeof *P->id * n);
     TRY(copy_volume_fraction(c, path, P));
+    TRY(copy_soil(c, path, P, nsoil));
     for (int i = 0; i < n; i++) {
         if (P->type[i] < 0 || P->type[i] > 2)
             return sim_error(SIM_ERR_INPUT, "%s: particle %d has type %d "
@@ -245,7 +309,7 @@ static int create_fluid(struct fluid *f)
     struct vtu_cloud c = { 0 };
     struct linsolve *ls = NULL;
     const struct dict *ppe;
-    int rc;
+    int rc, nsoil = 0;
 
     TRY(read_patches(f));
     TRY(app_read_dict(&f->sv.app, "constant/transportProperties",
@@ -268,8 +332,10 @@ static int create_fluid(struct fluid *f)
     if (!rc)
         rc = vtu_check_finite(&c, path);
     if (!rc)
-        rc = copy_cloud(f, &c, path, &P);
+        rc = copy_cloud(f, &c, path, &P, &nsoil);
     vtu_cloud_free(&c);
+    if (!rc && (rc = read_soil(f, nsoil, &S)) != SIM_OK)
+        mps_particles_free(&P);
     if (!rc && (rc = mps_check_extent(&P, &S, f->dp, path)) != SIM_OK)
         mps_particles_free(&P);
     if (rc) {
@@ -416,6 +482,7 @@ static void cleanup(struct solver *sv)
     dict_free(f->solution);
     dict_free(f->patches);
     dict_free(f->particles);
+    dict_free(f->soil_dict);
     for (int k = 0; k < MAX_PATCHES; k++)
         wall_motion_free(&f->motion[k]);
 }

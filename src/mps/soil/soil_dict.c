@@ -2,7 +2,7 @@
  * soil_dict.c — constant/soilProperties: the soil model and its
  * parameters, with the defaults of doc/theory.md K0-03 ... K0-09.
  *
- *   model           solid;    // solid (Kim eqs. 9-15) | liquid (a second
+ *   soilModel       solid;    // solid (Kim eqs. 9-15) | liquid (a second
  *                             // fluid with its own viscosity)
  *   rho             1900;     // [kg/m^3]
  *   mu              0.577;    // friction coefficient (K0-09)
@@ -48,7 +48,7 @@ static int in_range(const struct dict *d, const char *key, double v,
 
 int soil_props_read(const struct dict *d, struct soil_props *p)
 {
-    TRY(model_select_index(d, "model", "soil model", TABLE(soil_model_table),
+    TRY(model_select_index(d, "soilModel", "soil model", TABLE(soil_model_table),
                            "solid", &p->model));
     TRY(dict_get_scalar_dim(d, "rho", DIM_RHO, &p->rho));
     TRY(in_range(d, "rho", p->rho, 0, 1e5, 1));

@@ -277,10 +277,10 @@ static void test_props(void **s)
     assert_true(p.rho == 1900 && p.mu == 0.577 && p.column_half_width == 0.5);
     assert_true(p.kernel_weight == 0 && p.cap == 0 && p.cd == 1.0 && p.drag_reaction == 1);
     assert_true(p.nu == 1e-3);
-    assert_int_equal(props("model liquid; rho 900; nu 2e-3; frictionWeight kernel;\n", &p), SIM_OK);
+    assert_int_equal(props("soilModel liquid; rho 900; nu 2e-3; frictionWeight kernel;\n", &p), SIM_OK);
     assert_true(p.model == SOIL_MODEL_LIQUID && p.rho == 900 && p.nu == 2e-3 && p.kernel_weight == 1);
     static const struct { const char *text, *msg; } bad[] = {
-        { "model soild; rho 1900;\n", "did you mean 'solid'" },
+        { "soilModel soild; rho 1900;\n", "did you mean 'solid'" },
         { "rho 1900;\nmu -0.1;\n", "constant/soilProperties:2" },
         { "rho 0;\n", "rho = 0 is out of range" },
         { "mu 0.5;\n", "rho" },

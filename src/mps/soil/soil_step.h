@@ -1,0 +1,44 @@
+/*
+ * soil_step.h — the soil phase inside the MPS step (soil_step.c,
+ * doc/theory.md K). Every function is called only when s->soil exists
+ * (the particles hold soil and constant/soilProperties was read).
+ */
+#ifndef MPSDEM_MPS_SOIL_STEP_H
+#define MPSDEM_MPS_SOIL_STEP_H
+
+#include <stdint.h>
+
+struct mps_solver;
+
+/* Per-particle work of a step, sized for the solver's capacity. */
+struct mps_soil {
+    uint8_t *role;      /* enum soil_role                                 */
+    double *rho;        /* density [kg/m^3]                               */
+    double *ratio;      /* rho_0/rho: PPE pair weights and correction     */
+    double *p_h;        /* column weight, eq. (13) [N/m^3]                */
+    double *S;          /* drag scratch                                   */
+    double *F, *Fd;     /* 3n friction and drag [N/m^3]                   */
+    double *acc;        /* 3n accelerations of the soil forces and of the
+                           drag reaction [m/s^2]                          */
+    double *u_old;      /* 3n velocities at the start of the step         */
+};
+
+/* s->soil when s->S.soil is set and the particles have a phase field;
+ * nothing otherwise. */
+int mps_soil_init(struct mps_solver *s);
+void mps_soil_free(struct mps_solver *s);
+
+/* After the neighbour search: roles, densities, ratios, u^m. */
+void mps_soil_begin(struct mps_solver *s);
+
+/* Before the prediction: s->soil->acc (the solid model's forces per unit
+ * mass on soil particles, the drag reaction on water; 0 otherwise). */
+int mps_soil_forces(struct mps_solver *s);
+
+/* Kinematic viscosity of particle i's phase [m^2/s]. */
+double mps_soil_viscosity(const struct mps_solver *s, int i);
+
+/* After the move: the acceleration of this step into P->accel. */
+void mps_soil_end(struct mps_solver *s, double dt);
+
+#endif

@@ -1,0 +1,82 @@
+#!/usr/bin/env bash
+# mpsSoil2D.sh — soil particles in mpsFluid (doc/theory.md K) on the
+# tutorial tutorials/mpsFluid/soilLayerStill coarsened to dp = 10 mm
+# (20 x 10 soil particles under 20 x 10 water, 548 with walls), 0.1 s:
+#   run:       both soil models reach End; fluid.vtu holds phase (200 soil
+#              particles) and acceleration
+#   E5-02:     liquid model, probes in the soil (floor, mid-depth) and in the
+#              water within 5 % of rho g (h_w - h_s) + rho_s g (h_s - y)
+#              over 0.05-0.1 s (measured within 1 % at dp = 5 mm)
+#   solid:     the layer stays put over 0.1 s (soil speeds < 2 % sqrt(g h))
+#   restart:   0 -> 0.1 s equals 0 -> 0.05 s + restart (the acceleration
+#              of the last step is read back) to round-off
+#   bad input: missing constant/soilProperties named; unknown soilModel
+#              with "did you mean"
+ROOT="$(cd "$(dirname "$0")/../.." && pwd)"
+TUT="$ROOT/tutorials/mpsFluid/soilLayerStill"
+TMP="$(mktemp -d)"
+trap 'rm -rf "$TMP"' EXIT
+export OMP_NUM_THREADS=1
+fails=0
+pass() { echo "PASS $1"; }
+fail() { echo "FAIL $1: $2"; fails=$((fails + 1)); }
+for b in mpsFluid genParticles vtuInfo dictTool; do
+    [ -x "$ROOT/bin/$b" ] || { fail mpsSoil2D "bin/$b not built"; exit 1; }
+done
+setcase() {
+    rm -rf "$TMP/$1"; cp -r "$TUT" "$TMP/$1"; c="$TMP/$1"
+    "$ROOT/bin/dictTool" -case "$c" system/particleDict -set dp=0.01 > /dev/null
+    "$ROOT/bin/dictTool" -case "$c" system/controlDict -set endTime=0.1 > /dev/null
+    "$ROOT/bin/dictTool" -case "$c" system/controlDict -set writeInterval=0.05 > /dev/null
+}
+run() { (cd "$c" && "$ROOT/bin/genParticles" > log.genParticles 2>&1 && "$ROOT/bin/mpsFluid" > log.mpsFluid 2>&1); }
+
+# --- liquid model: E5-02 on the probes ---------------------------------------
+setcase liquid
+sed -i 's/^soilModel .*/soilModel liquid;/' "$c/constant/soilProperties"
+if run && grep -q '^End' "$c/log.mpsFluid"; then pass soil_liquid_run
+else fail soil_liquid_run "$(grep -A2 FATAL "$c/log.mpsFluid" | head -3 | tr '\n' ' ')"; fi
+# probes (0.1, 0.0025), (0.1, 0.05), (0.1, 0.15); h_s = 0.1, h_w = 0.2
+got=$(awk '!/^#/ && $1 >= 0.05 { n++; for (k = 2; k <= 4; k++) s[k] += $k }
+      END { e[2] = 981 + 1900 * 9.81 * 0.0975; e[3] = 981 + 1900 * 9.81 * 0.05; e[4] = 1000 * 9.81 * 0.05
+            for (k = 2; k <= 4; k++) { r = s[k] / n / e[k] - 1; if (r < 0) r = -r; if (r > m) m = r }
+            printf "%.4f", m }' "$c/postProcessing/soil/0/probes.dat" 2>/dev/null)
+if [ -n "$got" ] && awk -v m="$got" 'BEGIN { exit !(m < 0.05) }'; then pass "soil_E5-02_liquid (largest probe error $got)"
+else fail soil_E5-02_liquid "largest probe error '$got' (want < 0.05)"; fi
+
+# --- solid model: runs, fields written, layer at rest, restart ---------------
+setcase solid
+if run && grep -q '^End' "$c/log.mpsFluid"; then pass soil_solid_run
+else fail soil_solid_run "$(grep -A2 FATAL "$c/log.mpsFluid" | head -3 | tr '\n' ' ')"; fi
+info=$("$ROOT/bin/vtuInfo" -case "$c" 0.1/fluid.vtu 2>/dev/null)
+if echo "$info" | grep -q '^counts phase .*1:200' && echo "$info" | grep -q '^field acceleration Float64 3'
+then pass soil_fields; else fail soil_fields "0.1/fluid.vtu lacks phase (200 soil) or acceleration"; fi
+umax=$("$ROOT/bin/vtuInfo" -dump "$c/0.1/fluid.vtu" 2>/dev/null | awk '
+    /^# x/ { for (i = 2; i <= NF; i++) k[$i] = i - 1; next } /^#/ || NF < 5 { next }
+    $k["phase"] == 1 { u = sqrt($k["velocity_0"]^2 + $k["velocity_1"]^2); if (u > m) m = u }
+    END { printf "%.5f", m / sqrt(9.81 * 0.2) }')
+if awk -v u="$umax" 'BEGIN { exit !(u != "" && u < 0.02) }'; then pass "soil_solid_at_rest (max soil speed $umax sqrt(gh))"
+else fail soil_solid_at_rest "max soil speed '$umax' sqrt(gh) (want < 0.02)"; fi
+cp -r "$c" "$TMP/restart"; c="$TMP/restart"
+rm -rf "$c/0.1" "$c/postProcessing" "$c/log.mpsFluid"
+"$ROOT/bin/dictTool" -case "$c" system/controlDict -set startFrom=latestTime > /dev/null
+(cd "$c" && "$ROOT/bin/mpsFluid" > log.mpsFluid 2>&1)
+rows() { "$ROOT/bin/vtuInfo" -dump "$1" 2>/dev/null | awk '!/^#/ && NF > 10'; }
+d=$(paste <(rows "$TMP/solid/0.1/fluid.vtu") <(rows "$c/0.1/fluid.vtu") | awk '
+    { h = NF / 2; for (i = 1; i <= h; i++) { a = $i; b = $(i + h); s = (a < 0 ? -a : a) + (b < 0 ? -b : b)
+        if (s > 0) { r = (a - b) / s; if (r < 0) r = -r; if (r > m) m = r } } } END { printf "%.3g", m + 0 }')
+if [ -f "$c/0.1/fluid.vtu" ] && awk -v d="$d" 'BEGIN { exit !(d < 1e-9) }'; then pass "soil_restart (largest relative difference $d)"
+else fail soil_restart "restart from 0.05 s differs from the continuous run by '$d'"; fi
+
+# --- bad input ----------------------------------------------------------------
+setcase nofile
+rm "$c/constant/soilProperties"
+if ! run && grep -q "constant/soilProperties: missing: the particles hold 200 soil" "$c/log.mpsFluid" 2>/dev/null \
+   || grep -q "constant/soilProperties" "$c/log.genParticles" 2>/dev/null; then pass soil_missing_properties
+else fail soil_missing_properties "no message naming constant/soilProperties"; fi
+setcase badmodel
+sed -i 's/^soilModel .*/soilModel soild;/' "$c/constant/soilProperties"
+if ! run && grep -q "soilProperties:13.*did you mean 'solid'" "$c/log.mpsFluid"; then pass soil_bad_model
+else fail soil_bad_model "$(grep -A2 FATAL "$c/log.mpsFluid" | head -3 | tr '\n' ' ')"; fi
+
+[ "$fails" -eq 0 ]
