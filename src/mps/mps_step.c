@@ -5,6 +5,10 @@
  *   1. neighbour search (cells of the largest r_e; CSR list; renumbering)
  *      [coupled, optional: water content traded towards a uniform phi/eps,
  *      volume_exchange.c]
+ *      [soil particles: the solid model's friction and drag, and the
+ *      drag's reaction on the water, as accelerations added in step 7;
+ *      the soil's own viscosity; rho_0/rho_i in the PPE and the
+ *      correction (soil/soil_step.c, doc/theory.md K)]
  *   7. prediction    u* = u^m + dt (nu <lap u^m> + g + f_ext)     eq. (10)
  *      [optional collision model on u*; optional predictor r* = r + dt u*
  *      at which the PPE and the gradient are evaluated (Koshizuka 1996)]

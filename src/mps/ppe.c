@@ -21,6 +21,9 @@
  * symmetric variant): A stays SPD and PCG applies, at half the cost per
  * iteration of BiCGSTAB's two products. The two agree where eps varies
  * slowly over r_e. The warm start is the pressure of the previous step.
+ * With soil particles (doc/theory.md K0-01) every pair term also carries
+ * the harmonic mean 2 r_i r_j/(r_i + r_j) of r = rho_0/rho: the
+ * multi-density div((rho_0/rho) grad P) (soil/soil_step.c).
  * Coupling hooks: ppe_scale s_i multiplies the source (Model B: eps_i,
  * eq. 13); with scaled_divergence set the divergence term is
  * <div(s u*)>_i instead and s_i multiplies the density term only (A0-04

@@ -17,6 +17,11 @@
  * is -(dt/rho_0) r_i grad P. The acceleration of the last step, which the
  * friction (10) reads, is (u^{m+1} - u^m)/dt of every particle; it is a
  * field of fluid.vtu, so that a restart goes on with it.
+ *
+ * Not yet multi-density: the wall and dummy pressure extrapolated from
+ * the fluid (walls.c, dummyPressure extrapolated) uses the water's density
+ * beside soil too, and the collision model treats every particle as of
+ * equal mass.
  */
 #include <stdlib.h>
 #include <string.h>
