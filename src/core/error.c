@@ -85,3 +85,16 @@ char *sim_strdup(const char *s)
         memcpy(d, s, n);
     return d;
 }
+
+int sim_reserve(void **p, size_t *cap, size_t need, size_t size)
+{
+    if (need <= *cap && *p)
+        return SIM_OK;
+    size_t n = need + need / 2 + 16;
+    void *q = sim_realloc(*p, n * size);
+    if (!q)
+        return SIM_ERR_NOMEM;
+    *p = q;
+    *cap = n;
+    return SIM_OK;
+}

@@ -79,6 +79,11 @@ void *sim_calloc(size_t n, size_t size);
 void *sim_realloc(void *p, size_t nbytes);
 char *sim_strdup(const char *s);
 
+/* Make *p hold at least `need` elements of `size` bytes; *cap counts them.
+ * Grows by 1.5x, so that slowly rising counts do not reallocate each step;
+ * on failure the old storage stays valid and SIM_ERR_NOMEM is returned. */
+int sim_reserve(void **p, size_t *cap, size_t need, size_t size);
+
 /* Grow the array p to hold count elements, or return SIM_ERR_NOMEM from
  * the calling function (the old storage stays valid and owned by p). */
 #define SIM_GROW(p, count)                                               \

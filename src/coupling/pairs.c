@@ -16,19 +16,6 @@
 #include "core/error.h"
 #include "coupling/porosity.h"
 
-static int reserve(void **p, size_t *cap, size_t need, size_t size)
-{
-    if (need <= *cap && *p)
-        return SIM_OK;
-    size_t n = need + need / 2 + 16;
-    void *q = sim_realloc(*p, n * size);
-    if (!q)
-        return SIM_ERR_NOMEM;
-    *p = q;
-    *cap = n;
-    return SIM_OK;
-}
-
 /* A grain with a non-finite position means the DEM side blew up: say so
  * in the coupling's words. */
 static int search_failed(int rc)
@@ -46,12 +33,12 @@ static int weights(struct coupling_pairs *P, double re)
 {
     const struct neighbour_cross *X = &P->X;
     size_t c = P->cap_w;
-    TRY(reserve((void **)&P->gw, &c, (size_t)X->npair + 1, sizeof *P->gw));
+    TRY(sim_reserve((void **)&P->gw, &c, (size_t)X->npair + 1, sizeof *P->gw));
     c = P->cap_w;
-    TRY(reserve((void **)&P->pw, &c, (size_t)X->npair + 1, sizeof *P->pw));
+    TRY(sim_reserve((void **)&P->pw, &c, (size_t)X->npair + 1, sizeof *P->pw));
     P->cap_w = c;
-    TRY(reserve((void **)&P->gwork, &P->cap_gw, 3 * (size_t)X->na + 3,
-                sizeof *P->gwork));
+    TRY(sim_reserve((void **)&P->gwork, &P->cap_gw, 3 * (size_t)X->na + 3,
+                    sizeof *P->gwork));
     P->dim = X->dim;
     P->re = re;
     P->ng = X->na;

@@ -8,19 +8,6 @@
 
 #include "core/error.h"
 
-static int grow(void **p, size_t *cap, size_t want, size_t size)
-{
-    if (want <= *cap)
-        return SIM_OK;
-    size_t c = want + want / 4 + 16;
-    void *q = sim_realloc(*p, c * size);
-    if (!q)
-        return SIM_ERR_NOMEM;
-    *p = q;
-    *cap = c;
-    return SIM_OK;
-}
-
 static void bounding_box(int dim, const double *x, int n, double *lo,
                          double *hi)
 {
@@ -87,9 +74,10 @@ static int set_geometry(struct cell_grid *g, int dim, double h,
 /* Counting sort of the n points into the grid whose geometry is set. */
 static int bin(struct cell_grid *g, const double *x, int n)
 {
-    TRY(grow((void **)&g->start, &g->cap_cells, (size_t)g->ncell + 2,
-             sizeof *g->start));
-    TRY(grow((void **)&g->order, &g->cap_n, (size_t)n + 1, sizeof *g->order));
+    TRY(sim_reserve((void **)&g->start, &g->cap_cells, (size_t)g->ncell + 2,
+                    sizeof *g->start));
+    TRY(sim_reserve((void **)&g->order, &g->cap_n, (size_t)n + 1,
+                    sizeof *g->order));
     size_t capn = g->cap_n;   /* both per-particle arrays share one capacity */
     void *c = sim_realloc(g->cell_of, capn * sizeof *g->cell_of);
     if (!c)

@@ -29,44 +29,29 @@
 
 #include "core/error.h"
 
-/* Make *p hold at least `need` elements of `size` bytes; *cap counts them.
- * Grows by 1.5x so that slowly rising counts do not reallocate each step. */
-static int reserve(void **p, size_t *cap, size_t need, size_t size)
-{
-    if (need <= *cap && *p)
-        return SIM_OK;
-    size_t n = need + need / 2 + 16;
-    void *q = sim_realloc(*p, n * size);
-    if (!q)
-        return SIM_ERR_NOMEM;
-    *p = q;
-    *cap = n;
-    return SIM_OK;
-}
-
 static int reserve_pairs(struct neighbour_cross *X, size_t n)
 {
     size_t c0 = X->cap_pair, c;
     c = c0;
-    TRY(reserve((void **)&X->aj, &c, n, sizeof *X->aj));
+    TRY(sim_reserve((void **)&X->aj, &c, n, sizeof *X->aj));
     c = c0;
-    TRY(reserve((void **)&X->ar, &c, n, sizeof *X->ar));
+    TRY(sim_reserve((void **)&X->ar, &c, n, sizeof *X->ar));
     c = c0;
-    TRY(reserve((void **)&X->bk, &c, n, sizeof *X->bk));
+    TRY(sim_reserve((void **)&X->bk, &c, n, sizeof *X->bk));
     c = c0;
-    TRY(reserve((void **)&X->bmap, &c, n, sizeof *X->bmap));
+    TRY(sim_reserve((void **)&X->bmap, &c, n, sizeof *X->bmap));
     X->cap_pair = c;
     return SIM_OK;
 }
 
 static int reserve_points(struct neighbour_cross *X, int na, int nb)
 {
-    TRY(reserve((void **)&X->astart, &X->cap_a, (size_t)na + 1,
-                sizeof *X->astart));
-    TRY(reserve((void **)&X->bstart, &X->cap_b, (size_t)nb + 1,
-                sizeof *X->bstart));
-    return reserve((void **)&X->xs, &X->cap_xs, 3 * ((size_t)nb + 1),
-                   sizeof *X->xs);
+    TRY(sim_reserve((void **)&X->astart, &X->cap_a, (size_t)na + 1,
+                    sizeof *X->astart));
+    TRY(sim_reserve((void **)&X->bstart, &X->cap_b, (size_t)nb + 1,
+                    sizeof *X->bstart));
+    return sim_reserve((void **)&X->xs, &X->cap_xs, 3 * ((size_t)nb + 1),
+                       sizeof *X->xs);
 }
 
 static int check_input(int dim, double rc, int na, const double *xa, int nb)
@@ -208,8 +193,8 @@ static int reserve_threads(struct neighbour_cross *X, int nt, int nb)
         X->tbuf = t;
         X->nthr = nt;
     }
-    return reserve((void **)&X->tcount, &X->cap_tcount,
-                   (size_t)nt * ((size_t)nb + 1), sizeof *X->tcount);
+    return sim_reserve((void **)&X->tcount, &X->cap_tcount,
+                       (size_t)nt * ((size_t)nb + 1), sizeof *X->tcount);
 }
 
 /* Points of A of chunk t of T: contiguous, ascending. */
@@ -416,10 +401,10 @@ int neighbour_cross_update(struct neighbour_cross *X, int dim, double rc,
     TRY(setup(X, dim, rc, na, xa, nb));
     X->rs = rc + skin;
     TRY(search(X, na, xa, nb, xb));
-    TRY(reserve((void **)&X->xa0, &X->cap_a0, (size_t)na + 1,
-                3 * sizeof *X->xa0));
-    TRY(reserve((void **)&X->xb0, &X->cap_b0, (size_t)nb + 1,
-                3 * sizeof *X->xb0));
+    TRY(sim_reserve((void **)&X->xa0, &X->cap_a0, (size_t)na + 1,
+                    3 * sizeof *X->xa0));
+    TRY(sim_reserve((void **)&X->xb0, &X->cap_b0, (size_t)nb + 1,
+                    3 * sizeof *X->xb0));
     if (na)
         memcpy(X->xa0, xa, 3 * (size_t)na * sizeof *xa);
     if (nb)
