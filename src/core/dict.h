@@ -161,6 +161,10 @@ const char *dict_where(const struct dict *d, const char *key, char *buf,
  * NULL or absent): "file:line:col: <formatted text>". Returns code. */
 int dict_error(const struct dict *d, const char *key, int code,
                const char *fmt, ...) __attribute__((format(printf, 4, 5)));
+/* SIM_OK when v of entry `key` lies in (lo, hi] (lo_open) or [lo, hi],
+ * else the dict_error "key = v is out of range (lo, hi]" at the entry. */
+int dict_range(const struct dict *d, const char *key, double v, double lo,
+               double hi, int lo_open);
 int dict_value_error(const struct dict_value *v, int code, const char *fmt,
                      ...) __attribute__((format(printf, 3, 4)));
 

@@ -707,3 +707,12 @@ int dict_value_get_word(const struct dict_value *v, const char **out)
     *out = x->u.s.text;
     return SIM_OK;
 }
+
+int dict_range(const struct dict *d, const char *key, double v, double lo,
+               double hi, int lo_open)
+{
+    if (lo_open ? (v > lo && v <= hi) : (v >= lo && v <= hi))
+        return SIM_OK;
+    return dict_error(d, key, SIM_ERR_DICT, "%s = %g is out of range %c%g, "
+                      "%g]", key, v, lo_open ? '(' : '[', lo, hi);
+}

@@ -75,22 +75,13 @@ const struct model_choice mps_choices[] = {
 static const int DIM_RHO[7] = { 1, -3, 0, 0, 0, 0, 0 };
 static const int DIM_NU[7] = { 0, 2, -1, 0, 0, 0, 0 };
 
-static int positive(const struct dict *d, const char *key, double v, double lo,
-                    double hi)
-{
-    if (!(v > lo) || !(v <= hi))
-        return dict_error(d, key, SIM_ERR_DICT, "%s = %g is out of range "
-                          "(%g, %g]", key, v, lo, hi);
-    return SIM_OK;
-}
-
 static int read_physics(const struct dict *tp, const struct dict *gd,
                         struct mps_settings *S)
 {
     TRY(dict_get_scalar_dim(tp, "rho", DIM_RHO, &S->rho));
-    TRY(positive(tp, "rho", S->rho, 0, 1e6));
+    TRY(dict_range(tp, "rho", S->rho, 0, 1e6, 1));
     TRY(dict_get_scalar_dim(tp, "nu", DIM_NU, &S->nu));
-    TRY(positive(tp, "nu", S->nu, 0, 1e3));
+    TRY(dict_range(tp, "nu", S->nu, 0, 1e3, 1));
     if (gd) {
         const char *key = dict_has(gd, "value") ? "value" : "g";
         TRY(dict_get_vector(gd, key, 3, S->g));
@@ -105,9 +96,9 @@ static int read_radii(const struct dict *d, struct mps_settings *S)
     TRY(dict_get_scalar_or(d, "reNumberDensity", 2.1, &S->re_n));
     TRY(dict_get_scalar_or(d, "reGradient", S->re_n, &S->re_grad));
     TRY(dict_get_scalar_or(d, "reLaplacian", 3.1, &S->re_lap));
-    TRY(positive(d, "reNumberDensity", S->re_n, 1.0, 10.0));
-    TRY(positive(d, "reGradient", S->re_grad, 1.0, 10.0));
-    TRY(positive(d, "reLaplacian", S->re_lap, 1.0, 10.0));
+    TRY(dict_range(d, "reNumberDensity", S->re_n, 1.0, 10.0, 1));
+    TRY(dict_range(d, "reGradient", S->re_grad, 1.0, 10.0, 1));
+    TRY(dict_range(d, "reLaplacian", S->re_lap, 1.0, 10.0, 1));
     return SIM_OK;
 }
 
@@ -118,19 +109,19 @@ static int read_free_surface(const struct dict *d, struct mps_settings *S)
     if (!fs)
         return SIM_OK;
     TRY(dict_get_scalar_or(fs, "beta", S->beta, &S->beta));
-    TRY(positive(fs, "beta", S->beta, 0, 1));
+    TRY(dict_range(fs, "beta", S->beta, 0, 1, 1));
     TRY(dict_get_scalar_or(fs, "alpha", S->alpha, &S->alpha));
-    TRY(positive(fs, "alpha", S->alpha, 0, 2));
+    TRY(dict_range(fs, "alpha", S->alpha, 0, 2, 1));
     TRY(dict_get_scalar_or(fs, "vectorDensityLimit", S->fs_n_max,
                            &S->fs_n_max));
-    TRY(positive(fs, "vectorDensityLimit", S->fs_n_max, 0, 2));
+    TRY(dict_range(fs, "vectorDensityLimit", S->fs_n_max, 0, 2, 1));
     TRY(model_select_index(fs, "pressure", "free-surface pressure",
                            TABLE(fs_pressure_table),
                            fs_pressure_table[S->fs_pressure]->name,
                            &S->fs_pressure));
     TRY(dict_get_scalar_or(fs, "betaPorous", S->beta_porous,
                            &S->beta_porous));
-    TRY(positive(fs, "betaPorous", S->beta_porous, 0, 1));
+    TRY(dict_range(fs, "betaPorous", S->beta_porous, 0, 1, 1));
     return SIM_OK;
 }
 
@@ -145,10 +136,11 @@ static int read_stabilisers(const struct dict *d, struct mps_settings *S)
     if (c) {
         TRY(dict_get_scalar_or(c, "distance", S->collision_ratio,
                                &S->collision_ratio));
-        TRY(positive(c, "distance", S->collision_ratio, 0, 1));
+        TRY(dict_range(c, "distance", S->collision_ratio, 0, 1, 1));
         TRY(dict_get_scalar_or(c, "restitution", S->collision_restitution,
                                &S->collision_restitution));
-        TRY(positive(c, "restitution", S->collision_restitution + 1, 0, 2));
+        TRY(dict_range(c, "restitution", S->collision_restitution + 1, 0, 2,
+                       1));
     }
     TRY(model_select(d, "shifting", "particle shifting",
                      TABLE(mps_shifting_table), "none", &m));
@@ -158,7 +150,7 @@ static int read_stabilisers(const struct dict *d, struct mps_settings *S)
     if (c) {
         TRY(dict_get_scalar_or(c, "coefficient", S->shifting_coeff,
                                &S->shifting_coeff));
-        TRY(positive(c, "coefficient", S->shifting_coeff, 0, 1));
+        TRY(dict_range(c, "coefficient", S->shifting_coeff, 0, 1, 1));
     }
     return SIM_OK;
 }
@@ -211,8 +203,8 @@ int mps_settings_read(const struct dict *transport, const struct dict *g,
         TRY(dict_get_scalar_or(solution, "maxEscapeFraction",
                                S->max_escape_fraction,
                                &S->max_escape_fraction));
-        TRY(positive(solution, "maxEscapeFraction", S->max_escape_fraction,
-                     0, 1));
+        TRY(dict_range(solution, "maxEscapeFraction", S->max_escape_fraction,
+                       0, 1, 1));
     }
     return SIM_OK;
 }

@@ -37,33 +37,24 @@ const struct model_head *const soil_friction_weight_table[] = {
 static const int DIM_RHO[7] = { 1, -3, 0, 0, 0, 0, 0 };
 static const int DIM_NU[7] = { 0, 2, -1, 0, 0, 0, 0 };
 
-static int in_range(const struct dict *d, const char *key, double v,
-                    double lo, double hi, int open_lo)
-{
-    if (open_lo ? !(v > lo && v <= hi) : !(v >= lo && v <= hi))
-        return dict_error(d, key, SIM_ERR_DICT, "%s = %g is out of range "
-                          "%c%g, %g]", key, v, open_lo ? '(' : '[', lo, hi);
-    return SIM_OK;
-}
-
 int soil_props_read(const struct dict *d, struct soil_props *p)
 {
-    TRY(model_select_index(d, "soilModel", "soil model", TABLE(soil_model_table),
-                           "solid", &p->model));
+    TRY(model_select_index(d, "soilModel", "soil model",
+                           TABLE(soil_model_table), "solid", &p->model));
     TRY(dict_get_scalar_dim(d, "rho", DIM_RHO, &p->rho));
-    TRY(in_range(d, "rho", p->rho, 0, 1e5, 1));
+    TRY(dict_range(d, "rho", p->rho, 0, 1e5, 1));
     TRY(dict_get_scalar_or(d, "mu", 0.577, &p->mu));
-    TRY(in_range(d, "mu", p->mu, 0, 10, 0));
+    TRY(dict_range(d, "mu", p->mu, 0, 10, 0));
     TRY(dict_get_scalar_or(d, "columnHalfWidth", 0.5, &p->column_half_width));
-    TRY(in_range(d, "columnHalfWidth", p->column_half_width, 0, 100, 1));
+    TRY(dict_range(d, "columnHalfWidth", p->column_half_width, 0, 100, 1));
     TRY(model_select_index(d, "frictionWeight", "friction weight",
                            TABLE(soil_friction_weight_table), "none",
                            &p->kernel_weight));
     TRY(dict_get_bool_or(d, "frictionCap", 0, &p->cap));
     TRY(dict_get_scalar_or(d, "dragCoefficient", 1.0, &p->cd));
-    TRY(in_range(d, "dragCoefficient", p->cd, 0, 1e3, 0));
+    TRY(dict_range(d, "dragCoefficient", p->cd, 0, 1e3, 0));
     TRY(dict_get_bool_or(d, "dragReaction", 1, &p->drag_reaction));
     TRY(dict_get_scalar_dim_or(d, "nu", DIM_NU, 1e-3, &p->nu));
-    TRY(in_range(d, "nu", p->nu, 0, 1e3, 1));
+    TRY(dict_range(d, "nu", p->nu, 0, 1e3, 1));
     return SIM_OK;
 }
