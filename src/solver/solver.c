@@ -3,7 +3,9 @@
  */
 #include "solver/solver.h"
 
+#include <math.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include <unistd.h>
 
 #include "core/dict.h"
@@ -151,6 +153,54 @@ static int step(struct solver *sv)
     return SIM_OK;
 }
 
+/* -relax T: T s of the program alone from the start time, with no
+ * function object and no output; that state at rest then replaces the
+ * start time's cloud (written as any write: a temporary file renamed over
+ * the old one, so a failure leaves the old cloud). Why: a lattice is not
+ * the arrangement the particles keep (doc/theory.md A0-25). */
+static int relax(struct solver *sv, const char *arg)
+{
+    const struct solver_ops *o = sv->ops;
+    char *end, dir[4200];
+    double span = strtod(arg, &end);
+    if (end == arg || *end || !isfinite(span) || !(span > 0))
+        return sim_error(SIM_ERR_INPUT, "-relax %s: the relaxation time "
+                         "must be a number > 0 [s]", arg);
+    if (sv->coupled)
+        return sim_error(SIM_ERR_INPUT, "system/couplingDict: -relax runs "
+                         "%s alone: set coupled no for the relaxation, and "
+                         "back to yes for the run", o->name);
+    TRY(o->rest(sv));
+    struct run_time start = sv->rt;
+    sv->rt.end_time = start.value + span;
+    log_info("\nRelaxing for %g s from t = %s (no function objects, no "
+             "output)\n", span, start.name);
+    while (time_running(&sv->rt)) {
+        int rc;
+        time_set_step(&sv->rt, o->propose_dt ? o->propose_dt(sv)
+                                             : sv->rt.delta_t);
+        time_increment(&sv->rt);
+        if ((rc = o->advance(sv)))
+            return o->dump_failed_advance ? failed(sv, rc) : rc;
+        if (o->check)
+            TRY(o->check(sv));
+        char extra[256] = "";
+        if (o->progress)
+            o->progress(sv, extra, sizeof extra);
+        time_log_progress(&sv->rt, extra);
+    }
+    long steps = sv->rt.step;
+    sv->rt = start;
+    TRY(o->rest(sv));
+    if (o->prepare_write)
+        TRY(o->prepare_write(sv));
+    TRY(time_make_dir(&sv->rt, sv->app.case_abs, "", dir, sizeof dir));
+    TRY(o->write(sv, dir));
+    log_info("\nRelaxed state (%ld steps) at rest written to %s/%s.vtu as "
+             "the start of t = %s", steps, start.name, o->cloud, start.name);
+    return SIM_OK;
+}
+
 /* Stop on an error; a coupled run tells the peer first (a second close
  * after coupled_stop is a no-op). */
 static void stop(struct solver *sv, int rc) __attribute__((noreturn));
@@ -164,24 +214,41 @@ static void stop(struct solver *sv, int rc)
 int solver_main(const struct solver_ops *ops, struct solver *sv, int argc,
                 char **argv)
 {
-    const char *list = NULL;
-    const struct app_option opts[] = {
-        { "-listModels", 0, NULL, "print every model choice (dictionary "
-          "key name) and exit", &list },
-        { NULL, 0, NULL, NULL, NULL }
-    };
-    int rc;
+    const char *list = NULL, *relax_time = NULL;
+    struct app_option opts[3] = { { 0 } };
+    int rc, nopts = 0;
 
+    if (ops->list_models)
+        opts[nopts++] = (struct app_option){ "-listModels", 0, NULL,
+            "print every model choice (dictionary key name) and exit",
+            &list };
+    if (ops->rest)
+        opts[nopts++] = (struct app_option){ "-relax", 1, "T",
+            "a relaxed start: run T s from the start time without output, "
+            "then write that state at rest as the start time's cloud, and "
+            "exit", &relax_time };
     sv->ops = ops;
     app_init(&sv->app, ops->name, ops->description, argc, argv,
-             ops->list_models ? opts : NULL, 0);
+             nopts ? opts : NULL, 0);
     if (list) {
         ops->list_models();
         return 0;
     }
     if ((rc = app_lock_case(&sv->app)) || (rc = create_time(sv))
-        || (rc = ops->create(sv)) || (rc = create_functions(sv))
-        || (rc = start_output(sv)))
+        || (rc = ops->create(sv)))
+        app_fatal(&sv->app, rc);
+    if (relax_time) {
+        if ((rc = relax(sv, relax_time)))
+            app_fatal(&sv->app, rc);
+        if (ops->stats)
+            ops->stats(sv);
+        if (ops->cleanup)
+            ops->cleanup(sv);
+        dict_free(sv->coupling);
+        dict_free(sv->control);
+        return app_end(&sv->app);
+    }
+    if ((rc = create_functions(sv)) || (rc = start_output(sv)))
         app_fatal(&sv->app, rc);
     dict_mark_used(sv->control, "application");  /* read by scripts */
     dict_warn_unused(sv->control);

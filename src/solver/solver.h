@@ -24,6 +24,11 @@
  *         return solver_main(&fluid_ops, &f.sv, argc, argv);
  *     }
  *
+ * `-relax T` (programs with a rest hook) makes a relaxed start instead of
+ * a run: the program alone, from the start time, T s with no function
+ * object and no output; that state at rest then replaces the start time's
+ * cloud (doc/theory.md A0-25).
+ *
  * Order of a run (doc/design.md §4 relies on it for the coupled programs):
  *   app_init; -listModels; lock; controlDict (+ couplingDict); create;
  *   refresh_scene + function objects; .pvd and usedParameters; unused-key
@@ -100,6 +105,10 @@ struct solver_ops {
     void (*progress)(struct solver *sv, char *buf, size_t n);
     /* The final statistics frame (NULL: none). */
     void (*stats)(struct solver *sv);
+    /* -relax: bring the state to rest (every velocity 0), before and
+     * after the relaxation run; an error refuses the relaxation (walls
+     * that move with time, say). NULL: the program has no -relax. */
+    int (*rest)(struct solver *sv);
     /* Free what create made (the scaffold frees its own part). */
     void (*cleanup)(struct solver *sv);
     /* NULL: the program runs alone only (a case whose couplingDict says

@@ -431,6 +431,24 @@ static int prepare_write(struct solver *sv)
     return SIM_OK;
 }
 
+/* -relax: every particle at rest (the soil's last accelerations too).
+ * Walls that move or are removed at a time would be moved by the
+ * relaxation: refused. */
+static int rest(struct solver *sv)
+{
+    struct fluid *f = (struct fluid *)sv;
+    struct mps_particles *P = &f->s.P;
+    if (f->s.walls_move)
+        return sim_error(SIM_ERR_INPUT, "system/particleDict: -relax needs "
+                         "walls that stay put, and a wall region has a "
+                         "motion or removeAt (the relaxation would move "
+                         "it): relax a copy of the case without them");
+    memset(P->u, 0, sizeof *P->u * 3 * (size_t)P->n);
+    if (P->accel)
+        memset(P->accel, 0, sizeof *P->accel * 3 * (size_t)P->n);
+    return SIM_OK;
+}
+
 static void progress(struct solver *sv, char *buf, size_t n)
 {
     const struct mps_solver *s = &((struct fluid *)sv)->s;
@@ -551,6 +569,7 @@ static const struct solver_ops fluid_ops = {
     .write = write_fields,
     .progress = progress,
     .stats = final_stats,
+    .rest = rest,
     .cleanup = cleanup,
     .coupling = &coupling,
 };

@@ -1,7 +1,8 @@
 /* test_solver.c — the run solver_main makes around a toy solver
  * (solver/solver.h): the order of the hooks (alone and coupled, which
- * doc/design.md §4 relies on), the .pvd on a restart, and what a failed
- * exchange and a failed advance leave behind. Each run is a child
+ * doc/design.md §4 relies on), the .pvd on a restart, what a failed
+ * exchange and a failed advance leave behind, and the relaxed start
+ * (-relax T). Each run is a child
  * process: solver_main holds the case lock until exit, and stops a
  * failed run through app_fatal. */
 #include <setjmp.h>
@@ -82,6 +83,12 @@ static int write_toy(struct solver *sv, const char *dir)
 
 static void stats(struct solver *sv) { trace(sv, "stats"); }
 
+static int rest(struct solver *sv)
+{
+    trace(sv, "rest(%s)", sv->rt.name);
+    return SIM_OK;
+}
+
 static int c_open(struct solver *sv) { trace(sv, "open"); return SIM_OK; }
 
 static int c_before(struct solver *sv)
@@ -109,7 +116,7 @@ static const struct solver_ops toy_ops = {
     .cloud = "toy", .peer_cloud = "peer", .create = create,
     .fo_tables = tables, .refresh_scene = refresh_scene,
     .advance = advance, .dump_failed_advance = 1, .write = write_toy,
-    .stats = stats, .coupling = &toy_coupling,
+    .stats = stats, .rest = rest, .coupling = &toy_coupling,
 };
 
 static char case_dir[64];
@@ -161,8 +168,10 @@ static void new_case(const char *control)
     put("system/controlDict", control);
 }
 
-/* Run toySolver on the case in a child; its exit status. */
-static int run(int fail_before_step, int fail_advance)
+/* Run toySolver on the case in a child (with -relax T when relax is not
+ * NULL); its exit status. */
+static int run_relax(int fail_before_step, int fail_advance,
+                     const char *relax)
 {
     fflush(NULL);
     pid_t pid = fork();
@@ -174,12 +183,18 @@ static int run(int fail_before_step, int fail_advance)
         if (!freopen("/dev/null", "w", stdout)
             || !freopen("/dev/null", "w", stderr))
             _exit(3);
-        char *argv[] = { "toySolver", "-case", case_dir, NULL };
-        exit(solver_main(&toy_ops, &t.sv, 3, argv));
+        char *argv[] = { "toySolver", "-case", case_dir, "-relax",
+                         (char *)relax, NULL };
+        exit(solver_main(&toy_ops, &t.sv, relax ? 5 : 3, argv));
     }
     int st;
     assert_int_equal(waitpid(pid, &st, 0), pid);
     return WIFEXITED(st) ? WEXITSTATUS(st) : -1;
+}
+
+static int run(int fail_before_step, int fail_advance)
+{
+    return run_relax(fail_before_step, fail_advance, NULL);
 }
 
 static void remove_case(void)
@@ -275,6 +290,36 @@ static void test_failed_advance(void **state)
     remove_case();
 }
 
+/* -relax 0.45: the program steps past endTime (0.3) from the start time
+ * with no write, then writes the state at rest as the start time's cloud
+ * (named 0 again) and stops; no .pvd, no other time directory. A coupled
+ * case and a bad time are refused before any step. */
+static void test_relax(void **state)
+{
+    (void)state;
+    new_case(control);
+    make_dir("0");
+    put("0/toy.vtu", "lattice\n");
+    assert_int_equal(run_relax(0, 0, "0.45"), 0);
+    assert_string_equal(get("trace"),
+                        "create rest(0) advance(0.1) advance(0.2) "
+                        "advance(0.3) advance(0.4) advance(0.45) rest(0) "
+                        "write(0) stats ");
+    assert_string_equal(get("0/toy.vtu"), "0\n");
+    assert_false(exists("0.1"));
+    assert_false(exists("toy.pvd"));
+    put("trace", "");
+    assert_int_equal(run_relax(0, 0, "0.1s"), 1);
+    assert_string_equal(get("trace"), "create ");
+    put("trace", "");
+    put("system/couplingDict", "coupled yes;\n");
+    put("0/peer.vtu", "0\n");
+    assert_int_equal(run_relax(0, 0, "1"), 1);
+    assert_string_equal(get("trace"), "create ");
+    assert_string_equal(get("0/toy.vtu"), "0\n");
+    remove_case();
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -282,6 +327,7 @@ int main(void)
         cmocka_unit_test(test_coupled_order),
         cmocka_unit_test(test_coupled_failure),
         cmocka_unit_test(test_failed_advance),
+        cmocka_unit_test(test_relax),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

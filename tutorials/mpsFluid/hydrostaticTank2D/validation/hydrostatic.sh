@@ -3,7 +3,8 @@
 # doc/theory.md E1-07/E1-08 on the fluid.vtu snapshots of the last WINDOW
 # seconds (default 0.2):
 #   L2      relative L2 error of the time-averaged fluid pressure (per
-#           particle id) against rho g (h - z), h the initial water depth
+#           particle id) against rho g (h - z), h the water depth (the
+#           top of the fluid region's box in system/particleDict)
 #   umax    largest fluid speed in the window, and the same / sqrt(g h)
 #   deepfs  fraction of fluid particles more than 3 dp below the surface
 #           flagged as free surface (E1-07 asks < 0.5 %)
@@ -28,8 +29,15 @@ g=$(sed 's|//.*||' constant/g | awk '/^value/ {gsub("[();]","",$0); for (i = 2; 
 times=$(ls -d [0-9]* | sort -g)
 last=$(echo "$times" | tail -1)
 col=$([ "$dim" = 2 ] && echo 2 || echo 3)
-# initial depth: highest fluid particle of 0/ + dp/2
-h=$("$VTU" -dump 0/fluid.vtu 2>/dev/null | awk -v c=$col -v dp=$dp \
+# water depth h: the top of the box of the fluid region in
+# system/particleDict (the depth the case is built with; a relaxed start,
+# mpsFluid -relax, keeps its volume but not its top row), else the highest
+# fluid particle of 0/ + dp/2
+h=$(sed 's|//.*||' system/particleDict | awk -v c=$col '
+    /{/ { depth++ } /}/ { if (depth-- == 2) fl = 0 }
+    /type[ \t]+fluid[ \t]*;/ { fl = 1 }
+    fl && /^[ \t]*max[ \t]*\(/ { gsub(/[();]/, " "); print $(c + 1); exit }')
+[ -n "$h" ] || h=$("$VTU" -dump 0/fluid.vtu 2>/dev/null | awk -v c=$col -v dp=$dp \
     '!/^#/ && NF > 10 && $4 == 0 { if ($c > m) m = $c } END { print m + dp / 2 }')
 for t in $times; do
     [ -n "$OUT" ] || awk -v t=$t -v l=$last -v w=$WIN 'BEGIN { exit !(t >= l - w - 1e-9) }' || continue
