@@ -69,6 +69,8 @@ const struct model_choice mps_choices[] = {
     { "constant/soilProperties", "soilModel", TABLE(soil_model_table) },
     { "constant/soilProperties", "frictionWeight",
       TABLE(soil_friction_weight_table) },
+    { "constant/soilProperties", "frictionLoad",
+      TABLE(soil_friction_load_table) },
     { NULL, NULL, NULL }
 };
 

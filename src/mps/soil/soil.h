@@ -87,6 +87,7 @@ struct soil_props {
     double column_half_width; /* b of eq. (13) [l0] (solid)                  */
     int kernel_weight;      /* frictionWeight none | kernel (solid)          */
     int cap;                /* frictionCap (solid)                           */
+    int load_total;         /* frictionLoad: 0 withoutFriction, 1 total      */
     double cd;              /* dragCoefficient C_D [-] (solid)               */
     int drag_reaction;      /* dragReaction (solid)                          */
     double nu;              /* kinematic viscosity [m^2/s] (liquid)          */
@@ -95,6 +96,7 @@ struct soil_props {
 /* The model and option tables, for the solver's -listModels list. */
 extern const struct model_head *const soil_model_table[];
 extern const struct model_head *const soil_friction_weight_table[];
+extern const struct model_head *const soil_friction_load_table[];
 
 /* Read d (constant/soilProperties) into p; errors name the entry. */
 int soil_props_read(const struct dict *d, struct soil_props *p);

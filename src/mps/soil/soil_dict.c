@@ -9,6 +9,7 @@
  *   columnHalfWidth 0.5;      // b of eq. (13) [l0] (K0-03)
  *   frictionWeight  none;     // none | kernel (K0-04)
  *   frictionCap     no;       // (K0-05)
+ *   frictionLoad    withoutFriction; // | total (K0-10)
  *   dragCoefficient 1;        // C_D of K.1 (K0-06, K0-09)
  *   dragReaction    yes;      // the drag's reaction on the fluid
  *   nu              1e-3;     // [m^2/s] liquid model (K0-09)
@@ -32,6 +33,15 @@ static const struct model_head weight_kernel = {
 const struct model_head *const soil_friction_weight_table[] = {
     &weight_none, &weight_kernel, NULL };
 
+static const struct model_head load_without = {
+    "withoutFriction", "a of eq. 10: the last step's acceleration less the "
+    "friction's own part (doc/theory.md K0-10)" };
+static const struct model_head load_total = {
+    "total", "a of eq. 10: the last step's whole acceleration, friction "
+    "included (doc/theory.md K0-10)" };
+const struct model_head *const soil_friction_load_table[] = {
+    &load_without, &load_total, NULL };
+
 #define TABLE(t) ((const void *const *)(t))
 
 static const int DIM_RHO[7] = { 1, -3, 0, 0, 0, 0, 0 };
@@ -51,6 +61,9 @@ int soil_props_read(const struct dict *d, struct soil_props *p)
                            TABLE(soil_friction_weight_table), "none",
                            &p->kernel_weight));
     TRY(dict_get_bool_or(d, "frictionCap", 0, &p->cap));
+    TRY(model_select_index(d, "frictionLoad", "friction load",
+                           TABLE(soil_friction_load_table), "withoutFriction",
+                           &p->load_total));
     TRY(dict_get_scalar_or(d, "dragCoefficient", 1.0, &p->cd));
     TRY(dict_range(d, "dragCoefficient", p->cd, 0, 1e3, 0));
     TRY(dict_get_bool_or(d, "dragReaction", 1, &p->drag_reaction));

@@ -15,7 +15,8 @@
  * Laplacian carries the harmonic mean 2 r_i r_j/(r_i + r_j) of
  * r = rho_0/rho (1 for water and walls), and the correction of particle i
  * is -(dt/rho_0) r_i grad P. The acceleration of the last step, which the
- * friction (10) reads, is (u^{m+1} - u^m)/dt of every particle; it is a
+ * friction (10) reads, is (u^{m+1} - u^m)/dt of every particle less the
+ * friction's own F_f/rho (K0-10; `frictionLoad total` keeps it); it is a
  * field of fluid.vtu, so that a restart goes on with it.
  *
  * Not yet multi-density: the wall and dummy pressure extrapolated from
@@ -123,8 +124,13 @@ void mps_soil_end(struct mps_solver *s, double dt)
 {
     struct mps_soil *m = s->soil;
     struct mps_particles *P = &s->P;
+    /* K0-10: the friction's own part is not a normal load; fed back, it
+     * makes a loop of gain ~2 mu (> 1 for sand) */
+    const int total = s->S.soil->model != SOIL_MODEL_SOLID
+                   || s->S.soil->load_total;
 #pragma omp parallel for schedule(static)
     for (int i = 0; i < P->n; i++)
         for (int q = 0; q < 3; q++)
-            P->accel[3 * i + q] = (P->u[3 * i + q] - m->u_old[3 * i + q]) / dt;
+            P->accel[3 * i + q] = (P->u[3 * i + q] - m->u_old[3 * i + q]) / dt
+                                - (total ? 0.0 : m->F[3 * i + q] / m->rho[i]);
 }
