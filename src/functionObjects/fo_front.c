@@ -33,6 +33,7 @@
  *   minNumberDensity 0.5;       // n/n0 threshold
  *   maxHeight        0.02;      // [m] above o, optional (default: none)
  *   minHeight        0.03;      // [m] above o, optional (default: none)
+ *   phase            all;       // all | water | soil (cases with soil)
  *   referenceLength  0.057;     // a [m], optional: adds the column Z
  *   gravity          9.81;      // |g| [m/s^2], optional (with
  *                               // referenceLength): adds the column T
@@ -45,6 +46,7 @@
 
 #include "core/dict.h"
 #include "core/error.h"
+#include "core/select.h"
 #include "core/log.h"
 #include "functionObjects/mps_functionObjects.h"
 
@@ -57,6 +59,7 @@ struct front {
     double zmin, zmax; /* minHeight, maxHeight, or -/+INFINITY */
     double a, g;    /* 0 when not given */
     int warned;
+    int phase;      /* enum mps_fo_phase */
 };
 
 static void destroy(void *data)
@@ -133,6 +136,8 @@ static int create(const struct dict *d, const struct fo_scene *s, void **data)
         rc = read_direction(d, s, fr);
     if (rc == SIM_OK)
         rc = read_scales(d, fr);
+    if (rc == SIM_OK)
+        rc = mps_fo_read_phase(d, s, &fr->phase);
     if (rc == SIM_OK) {
         fr->name = sim_strdup(dict_name(d));
         rc = fr->name ? SIM_OK : SIM_ERR_NOMEM;
@@ -152,6 +157,9 @@ static int header(void *data, const struct fo_scene *s, FILE *f)
     fprintf(f, "# front: max over fluid particles with n/n0 >= %g of "
             "(x - (%.9g %.9g %.9g)) . (%.9g %.9g %.9g) [m]\n", fr->nd_min,
             fr->o[0], fr->o[1], fr->o[2], fr->e[0], fr->e[1], fr->e[2]);
+    if (fr->phase != MPS_FO_ALL_PHASES)
+        fprintf(f, "# only the %s particles\n",
+                mps_fo_phase_table[fr->phase]->name);
     if (isfinite(fr->zmax))
         fprintf(f, "# only particles at most %.9g m above the origin\n",
                 fr->zmax);
@@ -175,7 +183,7 @@ static double leading_edge(const struct mps_fo_fields *f, int dim,
     long n = (long)f->n;
 #pragma omp parallel for reduction(max : m) schedule(static)
     for (long i = 0; i < n; i++) {
-        if (f->type[i] != 0 || !(f->nd[i] >= fr->nd_min))
+        if (!mps_fo_in_phase(f, i, fr->phase) || !(f->nd[i] >= fr->nd_min))
             continue;
         const double *x = f->x + 3 * i;
         if (x[z] - fr->o[z] > fr->zmax || x[z] - fr->o[z] < fr->zmin)

@@ -11,7 +11,7 @@
  * value "escaped" of the scene when it publishes one, is the last column
  * (nan when it does not). A restarted run measures dV from its own start.
  *
- * Keys: none beyond the schedule.
+ * Keys: phase all | water | soil (cases with soil; default all).
  * Columns: time, N_f, V [m^3, or m^2 in 2-D], dV [-], escaped.
  */
 #include <math.h>
@@ -19,11 +19,13 @@
 #include <stdlib.h>
 
 #include "core/error.h"
+#include "core/select.h"
 #include "functionObjects/mps_functionObjects.h"
 
 struct volume {
     int started;
     double v0;
+    int phase;      /* enum mps_fo_phase */
 };
 
 static int create(const struct dict *d, const struct fo_scene *s, void **data)
@@ -33,13 +35,21 @@ static int create(const struct dict *d, const struct fo_scene *s, void **data)
     struct volume *v = sim_calloc(1, sizeof *v);
     if (!v)
         return SIM_ERR_NOMEM;
+    int rc = mps_fo_read_phase(d, s, &v->phase);
+    if (rc != SIM_OK) {
+        free(v);
+        return rc;
+    }
     *data = v;
     return SIM_OK;
 }
 
 static int header(void *data, const struct fo_scene *s, FILE *f)
 {
-    (void)data;
+    const struct volume *v = data;
+    if (v->phase != MPS_FO_ALL_PHASES)
+        fprintf(f, "# only the %s particles\n",
+                mps_fo_phase_table[v->phase]->name);
     fprintf(f, "# volume: fluid particles N, volume N dp^%d [%s], relative "
             "change from the first row, particles escaped (nan: not "
             "published by the solver)\n# time N V dV escaped\n", s->dim,
@@ -59,7 +69,7 @@ static int execute(void *data, const struct fo_scene *s, FILE *out)
                       ? *vf->ref : NULL;
 #pragma omp parallel for reduction(+ : count, sum) schedule(static)
     for (long i = 0; i < n; i++)
-        if (f.type[i] == 0) {
+        if (mps_fo_in_phase(&f, i, v->phase)) {
             count++;
             sum += phi ? phi[i] : 1.0;
         }

@@ -28,6 +28,8 @@
  *   gaugeLocations   ((x y) ...);   // [m]; 2-D: (x) or (x 0), or (x0 x1 ...)
  *   halfWidth        1;             // b in units of dp
  *   minNumberDensity 0.5;           // n/n0 threshold for fluid particles
+ *   phase            all;           // all | water | soil (cases with soil:
+ *                                   // soil reads the top of the bed)
  * Columns: time, eta of each gauge [m].
  */
 #include <float.h>
@@ -37,6 +39,7 @@
 
 #include "core/dict.h"
 #include "core/error.h"
+#include "core/select.h"
 #include "core/log.h"
 #include "functionObjects/mps_functionObjects.h"
 
@@ -49,6 +52,7 @@ struct gauges {
     double nd_min;
     double *pt;     /* 3n: horizontal x, y, 0  */
     char *warned;
+    int phase;      /* enum mps_fo_phase       */
 };
 
 static void destroy(void *data)
@@ -104,6 +108,8 @@ static int create(const struct dict *d, const struct fo_scene *s, void **data)
     int rc = mps_fo_fields_get(d, s, FIELDS, &f);
     if (rc == SIM_OK)
         rc = read_keys(d, s, g);
+    if (rc == SIM_OK)
+        rc = mps_fo_read_phase(d, s, &g->phase);
     if (rc == SIM_OK) {
         g->name = sim_strdup(dict_name(d));
         g->warned = sim_calloc((size_t)g->n, 1);
@@ -123,6 +129,9 @@ static int header(void *data, const struct fo_scene *s, FILE *f)
     fprintf(f, "# waveGauges: free-surface elevation [m] (top fluid particle "
             "with n/n0 >= %g + dp/2) in columns of half-width %g m\n",
             g->nd_min, g->half);
+    if (g->phase != MPS_FO_ALL_PHASES)
+        fprintf(f, "# only the %s particles\n",
+                mps_fo_phase_table[g->phase]->name);
     for (int k = 0; k < g->n; k++) {
         if (s->dim == 2)
             fprintf(f, "# gauge %d x = %.9g\n", k, g->pt[3 * k]);
@@ -152,7 +161,7 @@ static void scan_column(const struct mps_fo_fields *f, int dim,
         if (fabs(x[0] - c[0]) > g->half
             || (dim == 3 && fabs(x[1] - c[1]) > g->half))
             continue;
-        if (f->type[i] == 0 && f->nd[i] >= g->nd_min)
+        if (mps_fo_in_phase(f, i, g->phase) && f->nd[i] >= g->nd_min)
             t = x[v] > t ? x[v] : t;
         else if (f->type[i] == 1 && f->normal[3 * i + v] < -0.5)
             fl = x[v] > fl ? x[v] : fl;

@@ -11,6 +11,7 @@
 
 #include "core/dict.h"
 #include "core/error.h"
+#include "core/select.h"
 
 extern const struct fo_ops fo_mps_probes, fo_mps_wave_gauges, fo_mps_front,
     fo_mps_forces, fo_mps_volume;
@@ -84,6 +85,31 @@ int mps_fo_fields_get(const struct dict *who, const struct fo_scene *s,
             return located(who, SIM_ERR_INPUT);
         memcpy((char *)f + specs[k].offset, &v, sizeof(void *));
     }
+    const struct store_field *ph = store_find(s->store, "phase");
+    if (ph && ph->type == VTU_INT32 && ph->ncomp == 1)
+        f->phase = *ph->ref;
+    return SIM_OK;
+}
+
+static const struct model_head phase_all = {
+    "all", "every fluid particle, water and soil" };
+static const struct model_head phase_water = {
+    "water", "the fluid particles of phase 0" };
+static const struct model_head phase_soil = {
+    "soil", "the soil particles (phase 1, doc/theory.md K)" };
+const struct model_head *const mps_fo_phase_table[] = {
+    &phase_all, &phase_water, &phase_soil, NULL };
+
+int mps_fo_read_phase(const struct dict *d, const struct fo_scene *s,
+                      int *phase)
+{
+    TRY(model_select_index(d, "phase", "phase",
+                           (const void *const *)mps_fo_phase_table, "all",
+                           phase));
+    if (*phase == MPS_FO_SOIL && !store_find(s->store, "phase"))
+        return dict_error(d, "phase", SIM_ERR_DICT, "phase soil: the case "
+                          "has no soil particles (no genParticles region "
+                          "of type soil)");
     return SIM_OK;
 }
 

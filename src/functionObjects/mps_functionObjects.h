@@ -35,6 +35,9 @@
  *   numberDensity  Float64 x1  n_i/n0, with the number-density radius
  *   freeSurface    UInt8   x1  0 inner, 1 surface (2 dry wall)
  *   id             Int64   x1  persistent particle id
+ *   phase          Int32   x1  optional: 1 soil, 0 water (cases with soil,
+ *                              doc/theory.md K); front, waveGauges and
+ *                              volume select one with the key `phase`
  *
  * scene->spacing = dp [m]; scene->dim = 2 (x-y plane, vertical y) or 3
  * (vertical z); scene->patch_names/npatches name the wall patches;
@@ -79,6 +82,7 @@ struct mps_fo_fields {
     const double *p, *u, *normal, *nd;
     const uint8_t *fs;
     const int64_t *id;
+    const int32_t *phase;  /* the optional field "phase", or NULL */
 };
 
 /* Fill f with the fields named in `mask` (others NULL) after checking type
@@ -86,6 +90,27 @@ struct mps_fo_fields {
  * error, which is SIM_ERR_INPUT. Also checks dim (2 or 3) and spacing. */
 int mps_fo_fields_get(const struct dict *who, const struct fo_scene *s,
                       unsigned mask, struct mps_fo_fields *f);
+
+/* The fluid particles a function object looks at: its key
+ *     phase   all;    // all (default) | water | soil
+ * (cases with soil, doc/theory.md K). `soil` on a cloud without the field
+ * "phase" is an error naming the key; `water` there is every fluid
+ * particle. */
+enum mps_fo_phase { MPS_FO_ALL_PHASES = 0, MPS_FO_WATER, MPS_FO_SOIL };
+int mps_fo_read_phase(const struct dict *d, const struct fo_scene *s,
+                      int *phase);
+extern const struct model_head *const mps_fo_phase_table[];
+
+/* Non-zero when particle i is a fluid particle (type 0) of `phase`. */
+static inline int mps_fo_in_phase(const struct mps_fo_fields *f, long i,
+                                  int phase)
+{
+    if (f->type[i] != 0)
+        return 0;
+    if (phase == MPS_FO_ALL_PHASES || !f->phase)
+        return 1;
+    return (f->phase[i] == 1) == (phase == MPS_FO_SOIL);
+}
 
 /* Index of the vertical axis: 1 in 2-D, 2 in 3-D. */
 int mps_fo_vertical(int dim);

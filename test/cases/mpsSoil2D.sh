@@ -12,8 +12,10 @@
 #              < 5 %, displacement < 0.5 dp)
 #   restart:   0 -> 0.1 s equals 0 -> 0.05 s + restart (the acceleration
 #              of the last step is read back) to round-off
+#   phase:     function objects on one phase (volume, waveGauges, front
+#              with phase soil / water) count and locate the right particles
 #   bad input: missing constant/soilProperties named; unknown soilModel
-#              with "did you mean"
+#              with "did you mean"; phase soil in a case without soil
 ROOT="$(cd "$(dirname "$0")/../.." && pwd)"
 TUT="$ROOT/tutorials/mpsFluid/soilLayerStill"
 TMP="$(mktemp -d)"
@@ -36,6 +38,13 @@ run() { (cd "$c" && "$ROOT/bin/genParticles" > log.genParticles 2>&1 && "$ROOT/b
 # --- liquid model: E5-02 on the probes ---------------------------------------
 setcase liquid
 sed -i 's/^soilModel .*/soilModel liquid;/' "$c/constant/soilProperties"
+# function objects on one phase (key phase): soil and water volumes, the
+# top of the bed at x = 0.1 (waveGauges), the top soil row (front upwards)
+fo() { "$ROOT/bin/dictTool" -case "$c" system/controlDict -new -set "functions/$1" > /dev/null; }
+fo soilVol/type=volume; fo soilVol/phase=soil
+fo waterVol/type=volume; fo waterVol/phase=water
+fo bedTop/type=waveGauges; fo bedTop/phase=soil; fo "bedTop/gaugeLocations=(0.1)"
+fo soilUp/type=front; fo soilUp/phase=soil; fo "soilUp/direction=(0 1 0)"
 if run && grep -q '^End' "$c/log.mpsFluid"; then pass soil_liquid_run
 else fail soil_liquid_run "$(grep -A2 FATAL "$c/log.mpsFluid" | head -3 | tr '\n' ' ')"; fi
 # probes (0.1, 0.0025), (0.1, 0.05), (0.1, 0.15); h_s = 0.1, h_w = 0.2
@@ -45,6 +54,16 @@ got=$(awk '!/^#/ && $1 >= 0.05 { n++; for (k = 2; k <= 4; k++) s[k] += $k }
             printf "%.4f", m }' "$c/postProcessing/soil/0/probes.dat" 2>/dev/null)
 if [ -n "$got" ] && awk -v m="$got" 'BEGIN { exit !(m < 0.05) }'; then pass "soil_E5-02_liquid (largest probe error $got)"
 else fail soil_E5-02_liquid "largest probe error '$got' (want < 0.05)"; fi
+
+pp="$c/postProcessing"
+got=$(for f in soilVol/0/volume.dat waterVol/0/volume.dat bedTop/0/waveGauges.dat soilUp/0/front.dat; do
+          awk '!/^#/ { v = $2 } END { printf "%s ", v }' "$pp/$f" 2>/dev/null; done)
+# 200 soil and 200 water particles; bed top 0.1 m (the top soil particle
+# + dp/2) and the top soil centre 0.095 m, both within dp/2 after 0.1 s
+if echo "$got" | awk '{ exit !($1 == 200 && $2 == 200 && $3 > 0.095 && $3 < 0.105 && $4 > 0.09 && $4 < 0.1) }' \
+   && grep -q '^# only the soil particles' "$pp/bedTop/0/waveGauges.dat"; then
+    pass "soil_functionObjects_phase (soil N, water N, bed top, top soil row: $got)"
+else fail soil_functionObjects_phase "'$got' (want 200 200 0.1+-0.005 0.095+-0.005)"; fi
 
 # --- solid model: runs, fields written, layer at rest, restart ---------------
 setcase solid
@@ -94,5 +113,12 @@ setcase badmodel
 sed -i 's/^soilModel .*/soilModel soild;/' "$c/constant/soilProperties"
 if ! run && grep -q "soilProperties:13.*did you mean 'solid'" "$c/log.mpsFluid"; then pass soil_bad_model
 else fail soil_bad_model "$(grep -A2 FATAL "$c/log.mpsFluid" | head -3 | tr '\n' ' ')"; fi
+
+setcase nosoil
+sed -i 's/type    soil; .*/type    fluid;/; /surfaceHeight/d' "$c/system/particleDict"
+"$ROOT/bin/dictTool" -case "$c" system/controlDict -new -set "functions/soilFront/type=front" -set "functions/soilFront/phase=soil" > /dev/null
+if ! run && grep -q "controlDict:[0-9]*.*phase soil: the case has no soil particles" "$c/log.mpsFluid" \
+   && [ ! -d "$c/0.05" ]; then pass soil_functionObject_noSoil
+else fail soil_functionObject_noSoil "$(grep -A2 FATAL "$c/log.mpsFluid" | head -3 | tr '\n' ' ')"; fi
 
 [ "$fails" -eq 0 ]
