@@ -211,6 +211,19 @@ static void stop(struct solver *sv, int rc)
     app_fatal(&sv->app, rc);
 }
 
+/* The end of a complete run (or relaxation): statistics, then free. */
+static int finish(struct solver *sv)
+{
+    if (sv->ops->stats)
+        sv->ops->stats(sv);
+    if (sv->ops->cleanup)
+        sv->ops->cleanup(sv);
+    fo_list_free(sv->fos);
+    dict_free(sv->coupling);
+    dict_free(sv->control);
+    return app_end(&sv->app);
+}
+
 int solver_main(const struct solver_ops *ops, struct solver *sv, int argc,
                 char **argv)
 {
@@ -240,13 +253,7 @@ int solver_main(const struct solver_ops *ops, struct solver *sv, int argc,
     if (relax_time) {
         if ((rc = relax(sv, relax_time)))
             app_fatal(&sv->app, rc);
-        if (ops->stats)
-            ops->stats(sv);
-        if (ops->cleanup)
-            ops->cleanup(sv);
-        dict_free(sv->coupling);
-        dict_free(sv->control);
-        return app_end(&sv->app);
+        return finish(sv);
     }
     if ((rc = create_functions(sv)) || (rc = start_output(sv)))
         app_fatal(&sv->app, rc);
@@ -268,12 +275,5 @@ int solver_main(const struct solver_ops *ops, struct solver *sv, int argc,
             ops->coupling->finish(sv);
         ops->coupling->close(sv, SIM_OK);
     }
-    if (ops->stats)
-        ops->stats(sv);
-    if (ops->cleanup)
-        ops->cleanup(sv);
-    fo_list_free(sv->fos);
-    dict_free(sv->coupling);
-    dict_free(sv->control);
-    return app_end(&sv->app);
+    return finish(sv);
 }
