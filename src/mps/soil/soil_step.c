@@ -22,8 +22,8 @@
  * Not yet multi-density: the wall and dummy pressure extrapolated from
  * the fluid (walls.c, dummyPressure extrapolated) uses the water's density
  * beside soil too (each neighbour's own density was tried, 2026-11-27:
- * E5-02 L2 0.125 instead of 0.021 in soilLayerStill, not kept), and the collision model treats every particle as of
- * equal mass.
+ * E5-02 L2 0.125 instead of 0.021 in soilLayerStill, not kept). The
+ * collision model weighs each pair by the densities (s->soil->rho).
  */
 #include <stdlib.h>
 #include <string.h>

@@ -3,10 +3,12 @@
  * Koshizuka's original, applied to the predicted velocity u* before the
  * pressure equation (as in the reference code of Koshizuka et al. 2018,
  * so that the PPE does not see the approach as a huge divergence): fluid
- * particles closer than alpha_c dp that approach each other exchange the normal part of their relative velocity as in an
- * inelastic collision of equal masses,
+ * particles closer than alpha_c dp that approach each other exchange the
+ * normal part of their relative velocity as in an inelastic collision of
+ * masses m = rho dp^d (equal but for the soil of doc/theory.md K),
  *
- *     du_i = -(1 + e)/2 ((u_i - u_j).n_ij) n_ij   if (u_i - u_j).n_ij > 0,
+ *     du_i = -(1 + e) m_j/(m_i + m_j) ((u_i - u_j).n_ij) n_ij
+ *                                         if (u_i - u_j).n_ij > 0,
  *     n_ij = (r_j - r_i)/|r_j - r_i|,
  *
  * summed over all such neighbours (Jacobi form: symmetric, independent of
@@ -22,6 +24,7 @@
  */
 #include "core/error.h"
 #include "mps/mps.h"
+#include "mps/soil/soil_step.h"
 #include "mps/stabiliser/stabiliser.h"
 
 static int apply_collision(struct mps_solver *s, double dt)
@@ -34,6 +37,7 @@ static int apply_collision(struct mps_solver *s, double dt)
     const double e = s->S.collision_restitution;
     double *du = s->grad; /* free before the correction */
     double *u = s->ustar;
+    const double *rho = s->soil ? s->soil->rho : NULL; /* NULL: one density */
 #pragma omp parallel for schedule(static)
     for (int i = 0; i < P->n; i++) {
         double d[3] = { 0, 0, 0 };
@@ -51,7 +55,9 @@ static int apply_collision(struct mps_solver *s, double dt)
                 }
                 if (vn <= 0)
                     continue;
-                double f = P->type[j] == MPS_FLUID ? 0.5 * (1 + e) : (1 + e);
+                double f = P->type[j] != MPS_FLUID ? 1 + e
+                         : rho ? (1 + e) * rho[j] / (rho[i] + rho[j])
+                         : 0.5 * (1 + e);
                 for (int q = 0; q < 3; q++)
                     d[q] -= f * vn * n[q];
             }

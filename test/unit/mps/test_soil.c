@@ -17,7 +17,10 @@
 #include "core/error.h"
 #include "mps/kernel/kernel.h"
 #include "mps/operators.h"
+#include "mps/mps.h"
 #include "mps/soil/soil.h"
+#include "mps/soil/soil_step.h"
+#include "mps/stabiliser/stabiliser.h"
 #include "particles/neighbour.h"
 
 #define G 9.81
@@ -297,6 +300,38 @@ static void test_props(void **s)
     }
 }
 
+/* The collision model between a soil particle (1900 kg/m^3) and a water
+ * particle approaching head-on at 0.3 dp: the momentum rho u of the pair
+ * is kept (masses rho dp^d) and the relative normal velocity is reversed
+ * times e (Lee et al. 2011 with the masses of the two phases). */
+static void test_collision_masses(void **st)
+{
+    (void)st;
+    double x[6] = { 0, 0, 0, 0.3, 0, 0 };
+    double u[6] = { 1, 0, 0, -2, 0, 0 }, du[6];
+    int32_t type[2] = { MPS_FLUID, MPS_FLUID };
+    double rho[2] = { 1900, 1000 };
+    struct mps_soil soil = { .rho = rho };
+    struct mps_solver s = { 0 };
+    s.P.n = 2;
+    s.P.dim = 3;
+    s.P.x = x;
+    s.P.type = type;
+    s.ustar = u;
+    s.grad = du;
+    s.dp = 1;
+    s.soil = &soil;
+    s.S.collision_ratio = 0.5;
+    s.S.collision_restitution = 0.2;
+    assert_int_equal(neighbour_build_brute(&s.nl, 2, x, 3, 1.0), SIM_OK);
+    const double p0 = rho[0] * 1 + rho[1] * -2;
+    assert_int_equal(mps_collision_lee2011.apply(&s, 1e-4), SIM_OK);
+    near(rho[0] * u[0] + rho[1] * u[3], p0, 1e-12);
+    near(u[0] - u[3], -0.2 * 3, 1e-12);
+    near(u[1] + u[2] + u[4] + u[5], 0, 0);
+    neighbour_free(&s.nl);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -306,6 +341,7 @@ int main(void)
         cmocka_unit_test(test_drag_stream),
         cmocka_unit_test(test_drag_momentum),
         cmocka_unit_test(test_props),
+        cmocka_unit_test(test_collision_masses),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
