@@ -14,6 +14,9 @@
 #              of the last step is read back) to round-off
 #   slope:     tutorials/mpsFluid/soilSlope at dp = 10 mm: the deposit of
 #              mu = 1 is steeper (by > 5 deg) and shorter than that of 0.3
+#   mobile bed: tutorials/mpsFluid/damBreakMobileBed at dp = 10 mm, 0.3 s,
+#              solid, liquid and the bed as water: soil and water past the
+#              gate (x > 0.35 m), all 450 soil particles kept
 #   phase:     function objects on one phase (volume, waveGauges, front
 #              with phase soil / water) count and locate the right particles
 #   bad input: missing constant/soilProperties named; unknown soilModel
@@ -127,6 +130,32 @@ got=$(cd "$TMP/slope" && MPSDEM_DIR="$ROOT" ./Allrun 0.3 1 > /dev/null 2>&1 \
 if echo "$got" | awk '{ exit !(NF == 10 && $7 > $2 + 5 && $8 < $3) }'; then
     pass "soil_slope_with_mu (mu angle runout height umax: $got)"
 else fail soil_slope_with_mu "'$got' (want the angle at mu = 1 above that at 0.3 by 5 deg, a shorter runout)"; fi
+
+# --- damBreakMobileBed at dp = 10 mm, 0.3 s: the gate lifts, soil and
+# water leave the reservoir; every soil particle kept; the bed made of
+# water (MODEL water) has no soil function objects
+MB="$ROOT/tutorials/mpsFluid/damBreakMobileBed"
+rm -rf "$TMP/mb"; cp -r "$MB" "$TMP/mb"
+"$ROOT/bin/dictTool" -case "$TMP/mb" system/particleDict -set dp=0.01 > /dev/null
+"$ROOT/bin/dictTool" -case "$TMP/mb" system/controlDict -set endTime=0.3 -set writeInterval=0.1 > /dev/null
+for m in solid liquid water; do
+    if (cd "$TMP/mb" && MPSDEM_DIR="$ROOT" ./Allrun $m > /dev/null 2>&1); then
+        d="$TMP/mb/${m}_1900"; [ $m = water ] && d="$TMP/mb/water"
+        got=$(MPSDEM_DIR="$ROOT" "$MB/validation/soilFront.sh" "$d" | tail -1)
+        nsoil=$(awk '!/^#/ { v = $2 } END { print v }' "$d/postProcessing/soilVolume/0/volume.dat" 2>/dev/null)
+        if [ $m = water ]; then
+            echo "$got" | awk '{ exit !($2 == "nan" && $5 > 0.4) }' && [ ! -d "$d/postProcessing/soilFront" ] \
+                && pass "soil_mobileBed_water (t Xs Hs airborne Xw: $got)" \
+                || fail soil_mobileBed_water "'$got' (want no soil, the water front past 0.4 m)"
+        else
+            echo "$got" | awk '{ exit !($2 > 0.35 && $5 > 0.35) }' && [ "$nsoil" = 450 ] \
+                && pass "soil_mobileBed_$m (t Xs Hs airborne Xw: $got; soil particles $nsoil)" \
+                || fail soil_mobileBed_$m "'$got', soil particles '$nsoil' (want both fronts past 0.35 m, 450 soil)"
+        fi
+    else
+        fail soil_mobileBed_$m "Allrun $m failed"
+    fi
+done
 
 setcase nosoil
 sed -i 's/type    soil; .*/type    fluid;/; /surfaceHeight/d' "$c/system/particleDict"
