@@ -34,8 +34,8 @@ col=$([ "$dim" = 2 ] && echo 2 || echo 3)
 # mpsFluid -relax, keeps its volume but not its top row), else the highest
 # fluid particle of 0/ + dp/2
 h=$(sed 's|//.*||' system/particleDict | awk -v c=$col '
-    /{/ { depth++ } /}/ { if (depth-- == 2) fl = 0 }
-    /type[ \t]+fluid[ \t]*;/ { fl = 1 }
+    /{/ { depth++ } /}/ { if (--depth < fd) fl = 0 }
+    /type[ \t]+fluid[ \t]*;/ { fl = 1; fd = depth }
     fl && /^[ \t]*max[ \t]*\(/ { gsub(/[();]/, " "); print $(c + 1); exit }')
 [ -n "$h" ] || h=$("$VTU" -dump 0/fluid.vtu 2>/dev/null | awk -v c=$col -v dp=$dp \
     '!/^#/ && NF > 10 && $4 == 0 { if ($c > m) m = $c } END { print m + dp / 2 }')
