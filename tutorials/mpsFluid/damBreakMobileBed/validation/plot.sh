@@ -36,7 +36,7 @@ set ylabel "airborne soil particles (n/n0 < 0.5)"
 plot r1 u 1:4 w lp pt 7 ps 0.4 t "solid 1900", r2 u 1:4 w lp pt 5 ps 0.4 t "liquid 1900", \
      r3 u 1:4 w lp pt 6 ps 0.4 t "solid 900", r4 u 1:4 w lp pt 4 ps 0.4 t "liquid 900"
 unset multiplot
-set terminal pngcairo size 1500,560 font ",10"
+set terminal pngcairo size 1500,560 font ",10" noenhanced
 set output "validation/snapshots.png"
 set multiplot layout 2,3
 unset grid; set size ratio -1; set xrange [0:1.2]; set yrange [0:0.5]; unset key
