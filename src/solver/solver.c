@@ -122,6 +122,22 @@ static int coupled_stop(struct solver *sv, int rc)
     return sim_error(rc, "%s", msg);
 }
 
+/* The program's advance; a failure that leaves a state dumps it. */
+static int advance(struct solver *sv)
+{
+    int rc = sv->ops->advance(sv);
+    return rc && sv->ops->dump_failed_advance ? failed(sv, rc) : rc;
+}
+
+/* The progress line of the step just taken. */
+static void log_progress(struct solver *sv)
+{
+    char extra[256] = "";
+    if (sv->ops->progress)
+        sv->ops->progress(sv, extra, sizeof extra);
+    time_log_progress(&sv->rt, extra);
+}
+
 static int step(struct solver *sv)
 {
     const struct solver_ops *o = sv->ops;
@@ -132,8 +148,7 @@ static int step(struct solver *sv)
     if (c && (rc = c->before_step(sv)))
         return coupled_stop(sv, rc);
     time_increment(&sv->rt);
-    if ((rc = o->advance(sv)))
-        return o->dump_failed_advance ? failed(sv, rc) : rc;
+    TRY(advance(sv));
     if (c && c->after_step && (rc = c->after_step(sv)))
         return coupled_stop(sv, rc);
     if (o->check)
@@ -146,10 +161,7 @@ static int step(struct solver *sv)
         TRY(solver_write(sv, ""));
         app_log_times(&sv->app);
     }
-    char extra[256] = "";
-    if (o->progress)
-        o->progress(sv, extra, sizeof extra);
-    time_log_progress(&sv->rt, extra);
+    log_progress(sv);
     return SIM_OK;
 }
 
@@ -176,18 +188,13 @@ static int relax(struct solver *sv, const char *arg)
     log_info("\nRelaxing for %g s from t = %s (no function objects, no "
              "output)\n", span, start.name);
     while (time_running(&sv->rt)) {
-        int rc;
         time_set_step(&sv->rt, o->propose_dt ? o->propose_dt(sv)
                                              : sv->rt.delta_t);
         time_increment(&sv->rt);
-        if ((rc = o->advance(sv)))
-            return o->dump_failed_advance ? failed(sv, rc) : rc;
+        TRY(advance(sv));
         if (o->check)
             TRY(o->check(sv));
-        char extra[256] = "";
-        if (o->progress)
-            o->progress(sv, extra, sizeof extra);
-        time_log_progress(&sv->rt, extra);
+        log_progress(sv);
     }
     long steps = sv->rt.step;
     sv->rt = start;

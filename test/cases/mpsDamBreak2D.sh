@@ -4,15 +4,9 @@
 #   runs to End; fluid count conserved;
 #   surge front RMS (no time shift) < 0.20 (measured 0.152);
 #   column height RMS < 0.05 (measured 0.027).
-ROOT="$(cd "$(dirname "$0")/../.." && pwd)"
+NAME=damBreak2D; . "$(dirname "$0")/lib/case.sh"
+need_bins mpsFluid
 TUT="$ROOT/tutorials/mpsFluid/damBreak2D"
-TMP="$(mktemp -d)"
-trap 'rm -rf "$TMP"' EXIT
-export OMP_NUM_THREADS=1
-fails=0
-pass() { echo "PASS $1"; }
-fail() { echo "FAIL $1: $2"; fails=$((fails + 1)); }
-[ -x "$ROOT/bin/mpsFluid" ] || { fail damBreak2D "bin/mpsFluid not built"; exit 1; }
 [ -d "$ROOT/data/martin_moyce_1952" ] || { fail damBreak2D "data missing"; exit 1; }
 c="$TMP/case"
 cp -r "$TUT" "$c"

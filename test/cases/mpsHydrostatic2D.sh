@@ -22,17 +22,10 @@
 #   refused before the first step, PPE not converged (stops, state written
 #   to failed.<t>/, not to a time directory),
 #   missing fluid.vtu
-ROOT="$(cd "$(dirname "$0")/../.." && pwd)"
+# one thread (lib/case.sh): bit-for-bit restart comparison; tiny case
+NAME=mpsHydrostatic2D; . "$(dirname "$0")/lib/case.sh"
+need_bins mpsFluid genParticles vtuInfo dictTool
 TUT="$ROOT/tutorials/mpsFluid/hydrostaticTank2D"
-TMP="$(mktemp -d)"
-trap 'rm -rf "$TMP"' EXIT
-export OMP_NUM_THREADS=1   # bit-for-bit restart comparison; tiny case
-fails=0
-pass() { echo "PASS $1"; }
-fail() { echo "FAIL $1: $2"; fails=$((fails + 1)); }
-for b in mpsFluid genParticles vtuInfo dictTool; do
-    [ -x "$ROOT/bin/$b" ] || { fail mpsHydrostatic2D "bin/$b not built"; exit 1; }
-done
 setcase() { rm -rf "$TMP/$1"; cp -r "$TUT" "$TMP/$1"; c="$TMP/$1"; }
 set_entry() { "$ROOT/bin/dictTool" -case "$c" "$1" -set "$2=$3" >/dev/null; }
 

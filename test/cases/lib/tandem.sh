@@ -1,19 +1,13 @@
 # tandem.sh — sourced by the coupled case tests (test/cases/mpsDem*.sh):
-# the programs, a scratch directory removed at exit (KEEP=1 keeps it), the
-# PASS/FAIL helpers, and one tandem run of mpsFluid and demSolid.
+# lib/case.sh (root, scratch directory, PASS/FAIL), the programs, and one
+# tandem run of mpsFluid and demSolid.
 #
 #   NAME=mpsDemSettling; . "$(dirname "$0")/lib/tandem.sh"
 #
 # MPSFLUID / DEMSOLID override the programs (default bin/).
-ROOT="$(cd "$(dirname "${BASH_SOURCE[0]}")/../../.." && pwd)"
+. "$(dirname "${BASH_SOURCE[0]}")/case.sh"
 MPSFLUID=${MPSFLUID:-$ROOT/bin/mpsFluid}
 DEMSOLID=${DEMSOLID:-$ROOT/bin/demSolid}
-TMP="$(mktemp -d)"
-trap '[ -n "$KEEP" ] || rm -rf "$TMP"' EXIT
-export OMP_NUM_THREADS=1
-fails=0
-pass() { echo "PASS $1"; }
-fail() { echo "FAIL $1: $2"; fails=$((fails + 1)); }
 for p in "$MPSFLUID" "$DEMSOLID" "$ROOT/bin/genParticles"; do
     [ -x "$p" ] || { fail "$NAME" "$p not built"; exit 1; }
 done
