@@ -24,8 +24,12 @@ void csr_spmv(const struct csr_matrix *A, const double *x, double *y);
  * offending row. A must be valid. */
 int csr_is_symmetric(const struct csr_matrix *A, double rtol, int *row);
 
-/* Free the arrays of a matrix made by csr_alloc()/csr_lattice_ppe(). */
 int csr_alloc(struct csr_matrix *A, int n, int64_t nnz);
+/* Grow col and val of A to hold nnz entries (with a quarter spare, so a
+ * matrix assembled every step reallocates seldom); *cap: their capacity,
+ * updated. The entries kept are undefined. */
+int csr_reserve(struct csr_matrix *A, size_t *cap, int64_t nnz);
+/* Free the arrays of a matrix made by csr_alloc()/csr_lattice_ppe(). */
 void csr_free(struct csr_matrix *A);
 
 /*

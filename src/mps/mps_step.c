@@ -7,8 +7,9 @@
  *      volume_exchange.c]
  *      [soil particles: the solid model's friction and drag, and the
  *      drag's reaction on the water, as accelerations added in step 7;
- *      the soil's own viscosity; rho_0/rho_i in the PPE and the
- *      correction (soil/soil_step.c, doc/theory.md K)]
+ *      the soil's own viscosity, or the viscoplastic soil's implicit one
+ *      after step 7; rho_0/rho_i in the PPE and the correction
+ *      (soil/soil_step.c, doc/theory.md K)]
  *   7. prediction    u* = u^m + dt (nu <lap u^m> + g + f_ext)     eq. (10)
  *      [optional collision model on u*; optional predictor r* = r + dt u*
  *      at which the PPE and the gradient are evaluated (Koshizuka 1996)]
@@ -30,6 +31,7 @@
 #include "mps/mps.h"
 #include "mps/mps_impl.h"
 #include "mps/operators.h"
+#include "mps/soil/soil.h"
 #include "mps/soil/soil_step.h"
 #include "mps/stabiliser/stabiliser.h"
 
@@ -92,7 +94,8 @@ static void density(struct mps_solver *s)
     mps_free_surface(s);
 }
 
-static void correct(struct mps_solver *s, double dt)
+/* <grad P>_i of the fluid rows into s->grad, with the selected form */
+static void pressure_gradient(struct mps_solver *s)
 {
     struct mps_particles *P = &s->P;
     const struct neighbour_list in = neighbour_inner(&s->nl);
@@ -105,19 +108,67 @@ static void correct(struct mps_solver *s, double dt)
     else
         mps_gradient(&in, s->w_g, P->dim, s->Lg.n0, P->x, P->p,
                      P->inv_eps, s->rows_fluid, s->grad);
-    const double c0 = dt / s->S.rho;
-    const double *cs = P->corr_scale; /* Model B: 1/eps_i (eq. 5) */
-    const double *rr = s->soil ? s->soil->ratio : NULL; /* rho_0/rho_i */
+}
+
+/* dt/rho_i of eq. (8) for fluid particle i: dt/rho_0, times 1/eps_i
+ * (Model B, eq. 5) and rho_0/rho_i (soil) */
+static double correction_factor(const struct mps_solver *s, int i, double dt)
+{
+    const double *cs = s->P.corr_scale;
+    const double *rr = s->soil ? s->soil->ratio : NULL;
+    double c = dt / s->S.rho;
+    if (cs)
+        c *= cs[i];
+    if (rr)
+        c *= rr[i];
+    return c;
+}
+
+static void correct(struct mps_solver *s, double dt)
+{
+    struct mps_particles *P = &s->P;
+    pressure_gradient(s);
 #pragma omp parallel for schedule(static)
     for (int i = 0; i < P->n; i++) {
-        double c = cs ? c0 * cs[i] : c0;
-        if (rr)
-            c *= rr[i];
+        const double c = correction_factor(s, i, dt);
         for (int q = 0; q < 3; q++)
             P->u[3 * i + q] = P->type[i] == MPS_FLUID
                             ? s->ustar[3 * i + q] - c * s->grad[3 * i + q]
                             : P->u[3 * i + q];
     }
+}
+
+/* The viscoplastic soil's implicit viscous step (soil/soil_step.c) in
+ * incremental form (doc/theory.md K0-14): on u* less the correction of the
+ * last step's pressure, which is added back after. Without it the stiff
+ * viscosity ties the soil to the walls within the step and carries its
+ * weight there, before the PPE sees it: a resting layer lost 73 % of its
+ * hydrostatic pressure and its friction with it. s->lap is free after the
+ * prediction. */
+static int soil_viscous(struct mps_solver *s, double dt)
+{
+    if (!mps_soil_implicit_wanted(s))
+        return SIM_OK;
+    struct mps_particles *P = &s->P;
+    double *v = s->lap;
+    pressure_gradient(s);
+#pragma omp parallel for schedule(static)
+    for (int i = 0; i < P->n; i++) {
+        const double c = P->type[i] == MPS_FLUID ? correction_factor(s, i, dt)
+                                                 : 0.0;
+        for (int q = 0; q < 3; q++)
+            v[3 * i + q] = s->ustar[3 * i + q] - c * s->grad[3 * i + q];
+    }
+    TRY(mps_soil_implicit(s, dt, v));
+    const uint8_t *role = s->soil->role;
+#pragma omp parallel for schedule(static)
+    for (int i = 0; i < P->n; i++)
+        if (role[i] == SOIL_SOIL) {
+            const double c = correction_factor(s, i, dt);
+            for (int q = 0; q < P->dim; q++)
+                s->ustar[3 * i + q] = v[3 * i + q] + c * s->grad[3 * i + q];
+        }
+    return SIM_OK;
 }
 
 static void move(struct mps_solver *s, double dt)
@@ -145,6 +196,7 @@ int mps_step(struct mps_solver *s, double dt)
         TRY(mps_soil_forces(s));
     }
     predict(s, dt);
+    TRY(soil_viscous(s, dt));
     TRY(s->S.collision->apply(s, dt));
     if (s->S.predictor)
         predict_positions(s, dt, 1.0);

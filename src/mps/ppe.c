@@ -37,28 +37,12 @@
 
 #include "core/error.h"
 #include "core/log.h"
+#include "linsolve/csr.h"
 #include "mps/mps.h"
 #include "mps/mps_impl.h"
 #include "mps/soil/soil_step.h"
 #include "mps/surface_pressure.h"
 #include "particles/operators/matrix.h"
-
-static int grow_matrix(struct mps_solver *s, int64_t nnz)
-{
-    if ((size_t)nnz <= s->cap_nnz)
-        return SIM_OK;
-    size_t c = (size_t)nnz + (size_t)nnz / 4 + 64;
-    int32_t *col = sim_realloc(s->A.col, c * sizeof *col);
-    if (!col)
-        return SIM_ERR_NOMEM;
-    s->A.col = col;
-    double *val = sim_realloc(s->A.val, c * sizeof *val);
-    if (!val)
-        return SIM_ERR_NOMEM;
-    s->A.val = val;
-    s->cap_nnz = c;
-    return SIM_OK;
-}
 
 /* Number unknowns; rows_ppe marks fluid and wall rows (for div u*). */
 static int number_unknowns(struct mps_solver *s)
@@ -100,7 +84,7 @@ static int assemble(struct mps_solver *s, int m)
     /* pass 1: row lengths (diagonal + unknown neighbours); dummies are
      * never unknowns, so the pattern needs no type test */
     pop_matrix_rowptr(nl, P->n, w, s->unk, m, rp);
-    TRY(grow_matrix(s, rp[m]));
+    TRY(csr_reserve(&s->A, &s->cap_nnz, rp[m]));
     s->A.n = m;
     s->A.nnz = rp[m];
     /* pass 2: values; the diagonal first in each row */

@@ -77,8 +77,48 @@ void soil_drag(const struct soil_drag_params *p,
                const double *v, const uint8_t *role, double *F,
                double *a_fluid, double *S);
 
-/* constant/soilProperties (doc/theory.md K0-01 ... K0-09). */
-enum soil_model { SOIL_MODEL_SOLID, SOIL_MODEL_LIQUID };
+/* Viscoplastic soil, K.6 (soil_viscoplastic.c). */
+struct soil_vp_params {
+    double mu;              /* friction coefficient tan(phi) [-]             */
+    double cohesion;        /* c [Pa]                                        */
+    double rho;             /* soil density [kg/m^3]                         */
+    double nu_max;          /* viscosity cap [m^2/s] (K0-11)                 */
+    double p_wall;          /* added to p' against a wall [Pa] (K0-13)       */
+};
+
+/*
+ * K.6a-c: nu[i] [m^2/s] of every soil particle (0 for the others) from the
+ * strain rate of v (corrected gradient over the neighbours with w[k] > 0)
+ * and the yield pressure pres (K0-12). n0: the weights' number density (the fallback
+ * normalisation d/n0 where the moment matrix is singular).
+ */
+void soil_vp_viscosity(const struct soil_vp_params *p, int dim,
+                       const struct neighbour_list *nl, const double *w,
+                       double n0, const double *x, const double *v,
+                       const double *pres, const uint8_t *role, double *nu,
+                       double *nu_w);
+
+/*
+ * K.6d: the rows of the implicit viscous step of the soil particles
+ * (unk[i] >= 0: row unk[i]; rowptr from pop_matrix_rowptr with the same
+ * w and unk). c_dt = dt 2d/(n0 lambda) of the Laplacian weights w; nu_f
+ * the water's viscosity; v (3 per particle) the velocities the step starts
+ * from for the soil and the known velocities of the other particles; wn
+ * (3 per particle, may be NULL) the normals of wall and dummy particles:
+ * a wall then drags the tangential velocity only (K0-13). Writes col, val
+ * (diagonal first in each row) and b (3 right-hand sides per row,
+ * interleaved).
+ */
+void soil_vp_system(const struct neighbour_list *nl, const double *w,
+                    double c_dt, double nu_f, const double *nu,
+                    const double *nu_w, const uint8_t *role, const int32_t *unk,
+                    const double *v, const double *wn,
+                    const int64_t *rowptr, int32_t *col, double *val,
+                    double *b);
+
+/* constant/soilProperties (doc/theory.md K0-01 ... K0-13). */
+enum soil_model { SOIL_MODEL_SOLID, SOIL_MODEL_LIQUID,
+                  SOIL_MODEL_VISCOPLASTIC };
 
 struct soil_props {
     int model;              /* enum soil_model                               */
@@ -91,6 +131,8 @@ struct soil_props {
     double cd;              /* dragCoefficient C_D [-] (solid)               */
     int drag_reaction;      /* dragReaction (solid)                          */
     double nu;              /* kinematic viscosity [m^2/s] (liquid)          */
+    double cohesion;        /* c [Pa] (viscoplastic)                         */
+    double nu_max;          /* viscosity cap [m^2/s] (viscoplastic)          */
 };
 
 /* The model and option tables, for the solver's -listModels list. */

@@ -8,6 +8,9 @@
  *       reaction accelerates the water (dragReaction yes)
  *   liquid model:         Du/Dt = -(1/rho_s) grad P + nu_s lap u + g
  *       a second fluid with its own viscosity
+ *   viscoplastic model:   Du/Dt = -(1/rho_s) grad P + div(2 nu(p, D) D) + g
+ *       the Drucker-Prager yield stress as a viscosity, implicit
+ *       (soil_viscoplastic.c, K.6)
  *
  * Both models make the PPE a multi-density one, div((1/rho) grad P) =
  * (1/dt) div u* (times rho_0, the water's density, so that a case
@@ -25,13 +28,17 @@
  * E5-02 L2 0.125 instead of 0.021 in soilLayerStill, not kept). The
  * collision model weighs each pair by the densities (s->soil->rho).
  */
+#include <math.h>
 #include <stdlib.h>
 #include <string.h>
 
 #include "core/error.h"
+#include "linsolve/csr.h"
 #include "mps/mps.h"
 #include "mps/soil/soil.h"
 #include "mps/soil/soil_step.h"
+#include "particles/operators/matrix.h"
+#include "particles/operators/operators.h"
 
 int mps_soil_init(struct mps_solver *s)
 {
@@ -54,7 +61,20 @@ int mps_soil_init(struct mps_solver *s)
     if (!m->role || !m->ratio || !m->rho || !m->p_h || !m->S || !m->F
         || !m->Fd || !m->acc || !m->u_old)
         return SIM_ERR_NOMEM;
-    return SIM_OK;
+    if (s->S.soil->model != SOIL_MODEL_VISCOPLASTIC)
+        return SIM_OK;
+    m->nu = sim_calloc(c, sizeof *m->nu);
+    m->nu_w = sim_calloc(c, sizeof *m->nu_w);
+    m->unk = sim_calloc(c, sizeof *m->unk);
+    m->A.rowptr = sim_calloc(c + 1, sizeof *m->A.rowptr);
+    m->b = sim_calloc(3 * c, sizeof *m->b);
+    m->rhs = sim_calloc(c, sizeof *m->rhs);
+    m->sol = sim_calloc(c, sizeof *m->sol);
+    if (!m->nu || !m->nu_w || !m->unk || !m->A.rowptr || !m->b || !m->rhs || !m->sol)
+        return SIM_ERR_NOMEM;
+    /* K0-11: the velocities to 1e-10 of the right-hand side, far below
+     * the PPE's error */
+    return linsolve_create_named("pcg", "jacobi", 1e-10, 100000, &m->ls);
 }
 
 void mps_soil_free(struct mps_solver *s)
@@ -64,6 +84,10 @@ void mps_soil_free(struct mps_solver *s)
         return;
     free(m->role); free(m->ratio); free(m->rho); free(m->p_h); free(m->S);
     free(m->F); free(m->Fd); free(m->acc); free(m->u_old);
+    free(m->nu); free(m->nu_w); free(m->unk); free(m->A.rowptr); free(m->A.col);
+    free(m->A.val); free(m->b); free(m->rhs); free(m->sol);
+    if (m->ls)
+        linsolve_free(m->ls);
     free(m);
     s->soil = NULL;
 }
@@ -111,6 +135,96 @@ int mps_soil_forces(struct mps_solver *s)
             for (int q = 0; q < 3; q++)
                 m->acc[3 * i + q] = (m->F[3 * i + q] + m->Fd[3 * i + q])
                                   / m->rho[i];
+    return SIM_OK;
+}
+
+/*
+ * K0-12: the pressure p' of the yield stress, into m->S. An inner particle
+ * has the PPE's pressure of the last step (the mean stress of the
+ * incompressible soil). A surface particle has only the Dirichlet value,
+ * which is ~0 for every particle of a sheet a few particles thick: its
+ * sliding layer would have no strength at all. It takes instead the
+ * larger of that value and the infinite-slope normal stress under the
+ * soil above it, rho_s |g| h cos^2(theta): h = the soil column above plus
+ * half a spacing (eq. 13's p_h l0 + rho_s |g| l0/2), theta the angle
+ * between the outward surface normal -F/|F| (eq. 15) and the vertical. A
+ * flat top gets the full weight of the soil above, a vertical face none,
+ * as its horizontal stress is zero.
+ */
+static int yield_pressure(struct mps_solver *s)
+{
+    struct mps_soil *m = s->soil;
+    const struct mps_particles *P = &s->P;
+    const double *g = s->S.g;
+    const double gm = sqrt(g[0] * g[0] + g[1] * g[1] + g[2] * g[2]);
+    TRY(soil_column_weight(P->n, P->dim, P->x, m->role, m->rho, gm,
+                           s->S.soil->column_half_width * s->dp, m->p_h));
+    const struct neighbour_list in = neighbour_inner(&s->nl);
+#pragma omp parallel for schedule(static)
+    for (int i = 0; i < P->n; i++) {
+        m->S[i] = P->p[i];
+        if (m->role[i] != SOIL_SOIL || P->fs[i] != MPS_SURFACE || gm == 0)
+            continue;
+        double F[3];
+        pop_surface_vector_row(&in, s->w_n, P->x, P->inv_eps, i, F);
+        const double f = sqrt(F[0] * F[0] + F[1] * F[1] + F[2] * F[2]);
+        const double c = f > 0 ? fmax(0.0, (F[0] * g[0] + F[1] * g[1]
+                                            + F[2] * g[2]) / (f * gm)) : 1.0;
+        const double h = (m->p_h[i] + 0.5 * m->rho[i] * gm) * s->dp;
+        m->S[i] = fmax(P->p[i], h * c * c);
+    }
+    return SIM_OK;
+}
+
+int mps_soil_implicit_wanted(const struct mps_solver *s)
+{
+    return s->soil && s->S.soil->model == SOIL_MODEL_VISCOPLASTIC;
+}
+
+int mps_soil_implicit(struct mps_solver *s, double dt, double *v)
+{
+    struct mps_soil *m = s->soil;
+    const struct soil_props *sp = s->S.soil;
+    const struct mps_particles *P = &s->P;
+    const double *g = s->S.g;
+    const double gm = sqrt(g[0] * g[0] + g[1] * g[1] + g[2] * g[2]);
+    const struct soil_vp_params vp = {
+        .mu = sp->mu, .cohesion = sp->cohesion, .rho = sp->rho,
+        .nu_max = sp->nu_max,
+        .p_wall = 0.5 * sp->rho * gm * s->dp };
+    TRY(yield_pressure(s));
+    soil_vp_viscosity(&vp, P->dim, &s->nl, s->w_l, s->Ll.n0, P->x, P->u,
+                      m->S, m->role, m->nu, m->nu_w);
+    int n = 0;
+    for (int i = 0; i < P->n; i++)
+        m->unk[i] = m->role[i] == SOIL_SOIL ? n++ : -1;
+    if (n == 0)
+        return SIM_OK;
+    const int64_t nnz = pop_matrix_rowptr(&s->nl, P->n, s->w_l, m->unk, n,
+                                          m->A.rowptr);
+    TRY(csr_reserve(&m->A, &m->cap_nnz, nnz));
+    m->A.n = n;
+    m->A.nnz = nnz;
+    const double c_dt = dt * 2.0 * P->dim / (s->Ll.n0 * s->Ll.lambda);
+    soil_vp_system(&s->nl, s->w_l, c_dt, s->S.nu, m->nu, m->nu_w, m->role,
+                   m->unk, v, P->normal, m->A.rowptr, m->A.col, m->A.val,
+                   m->b);
+    for (int q = 0; q < P->dim; q++) {
+        for (int i = 0; i < P->n; i++)
+            if (m->unk[i] >= 0) {
+                m->rhs[m->unk[i]] = m->b[3 * (size_t)m->unk[i] + q];
+                m->sol[m->unk[i]] = v[3 * i + q];
+            }
+        struct linsolve_stats st;
+        int rc = linsolve_solve(m->ls, &m->A, m->rhs, m->sol, &st);
+        if (rc)
+            return sim_error(rc, "step %ld: the soil's implicit viscous step "
+                             "(%d unknowns, component %d) failed",
+                             s->step, n, q);
+        for (int i = 0; i < P->n; i++)
+            if (m->unk[i] >= 0)
+                v[3 * i + q] = m->sol[m->unk[i]];
+    }
     return SIM_OK;
 }
 

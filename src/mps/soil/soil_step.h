@@ -8,6 +8,8 @@
 
 #include <stdint.h>
 
+#include "linsolve/linsolve.h"
+
 struct mps_solver;
 
 /* Per-particle work of a step, sized for the solver's capacity. */
@@ -21,6 +23,13 @@ struct mps_soil {
     double *acc;        /* 3n accelerations of the soil forces and of the
                            drag reaction [m/s^2]                          */
     double *u_old;      /* 3n velocities at the start of the step         */
+    /* viscoplastic model (K.6): viscosities, the implicit viscous system */
+    double *nu, *nu_w;  /* n [m^2/s]: own, and against walls (K0-13)      */
+    int32_t *unk;       /* n: row of a soil particle, -1 for the others   */
+    struct csr_matrix A;
+    size_t cap_nnz;
+    double *b, *rhs, *sol; /* 3n, n, n                                    */
+    struct linsolve *ls;
 };
 
 /* s->soil when s->S.soil is set and the particles have a phase field;
@@ -35,7 +44,16 @@ void mps_soil_begin(struct mps_solver *s);
  * mass on soil particles, the drag reaction on water; 0 otherwise). */
 int mps_soil_forces(struct mps_solver *s);
 
-/* Kinematic viscosity of particle i's phase [m^2/s]. */
+/* Whether the soil model has an implicit viscous step (viscoplastic). */
+int mps_soil_implicit_wanted(const struct mps_solver *s);
+
+/* The viscoplastic model's implicit viscous step (K.6d): v (3n) holds the
+ * velocities the step starts from (soil) and the known velocities of the
+ * other particles; the soil rows are replaced by the solution. */
+int mps_soil_implicit(struct mps_solver *s, double dt, double *v);
+
+/* Kinematic viscosity of particle i's phase in the explicit prediction
+ * [m^2/s] (0 for soil that is not a liquid). */
 double mps_soil_viscosity(const struct mps_solver *s, int i);
 
 /* After the move: the acceleration of this step into P->accel. */

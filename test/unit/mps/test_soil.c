@@ -18,7 +18,9 @@
 #include "mps/kernel/kernel.h"
 #include "mps/operators.h"
 #include "mps/mps.h"
+#include "linsolve/csr.h"
 #include "mps/soil/soil.h"
+#include "particles/operators/matrix.h"
 #include "mps/soil/soil_step.h"
 #include "mps/stabiliser/stabiliser.h"
 #include "particles/neighbour.h"
@@ -259,6 +261,138 @@ static void test_drag_momentum(void **s)
     neighbour_free(&nl);
 }
 
+/* K.6a-c: on a 7 x 7 lattice of soil in simple shear u = (gd y, 0), the
+ * corrected gradient is exact, |D| = gd/2 and nu = (c + mu p)/(rho gd)
+ * at every particle; a negative pressure counts as 0; at rest, and below
+ * the cap, nu_max; against a wall the yield stress adds mu p_wall. */
+static void test_vp_viscosity(void **s)
+{
+    (void)s;
+    enum { M = 7, N = M * M };
+    const double l0 = 0.01, re = 3.1 * l0, gd = 2.0, rho = 1900, mu = 0.6, c = 50;
+    double x[3 * N] = { 0 }, v[3 * N] = { 0 }, p[N], nu[N], nu_w[N];
+    uint8_t role[N];
+    for (int k = 0; k < N; k++) {
+        x[3 * k] = (k % M) * l0;
+        x[3 * k + 1] = (k / M) * l0;
+        v[3 * k] = gd * x[3 * k + 1];
+        p[k] = 100.0 * (k % 5) - 100.0;
+        role[k] = SOIL_SOIL;
+    }
+    struct neighbour_list nl = { 0 };
+    assert_int_equal(neighbour_build_brute(&nl, 2, x, N, re), SIM_OK);
+    double *w = weights(&nl, re);
+    struct pop_lattice L;
+    assert_int_equal(mps_lattice_constants(&mps_kernel_poly6, 2, l0, re, &L), SIM_OK);
+    struct soil_vp_params vp = { .mu = mu, .cohesion = c, .rho = rho, .nu_max = 1e3, .p_wall = 40 };
+    soil_vp_viscosity(&vp, 2, &nl, w, L.n0, x, v, p, role, nu, nu_w);
+    for (int k = 0; k < N; k++) {
+        near(nu[k], (c + mu * fmax(p[k], 0)) / (rho * gd), 1e-10);
+        near(nu_w[k], (c + mu * (fmax(p[k], 0) + 40)) / (rho * gd), 1e-10);
+    }
+    memset(v, 0, sizeof v);
+    vp.nu_max = 0.5;
+    soil_vp_viscosity(&vp, 2, &nl, w, L.n0, x, v, p, role, nu, nu_w);
+    for (int k = 0; k < N; k++)
+        assert_true(nu[k] == 0.5 && nu_w[k] == 0.5);
+    role[0] = SOIL_WALL;
+    soil_vp_viscosity(&vp, 2, &nl, w, L.n0, x, v, p, role, nu, nu_w);
+    assert_true(nu[0] == 0 && nu_w[0] == 0);
+    free(w);
+    neighbour_free(&nl);
+}
+
+/* K.6d on 3 x 3 soil particles over a wall row (normal (0, -1), into the
+ * wall; v = 0) and a water particle at rest: the matrix is symmetric, its
+ * row sums are 1 plus the wall and water pair terms (nu_w against the
+ * wall, the harmonic mean with nu_f against water), its soil pair entries
+ * the arithmetic mean of the two viscosities; the wall drags the
+ * tangential velocity only (the right-hand side keeps the normal one). */
+static void test_vp_system(void **s)
+{
+    (void)s;
+    enum { NS = 9, NW = 5, N = NS + NW + 1 };
+    const double l0 = 0.01, re = 2.1 * l0, nu_f = 1e-6;
+    double x[3 * N] = { 0 }, v[3 * N] = { 0 }, wn[3 * N] = { 0 }, nu[N] = { 0 }, nu_w[N] = { 0 };
+    uint8_t role[N];
+    int32_t unk[N];
+    for (int k = 0; k < NS; k++) {
+        x[3 * k] = (k % 3) * l0;
+        x[3 * k + 1] = (1 + k / 3) * l0;
+        role[k] = SOIL_SOIL;
+        unk[k] = k;
+        nu[k] = 0.1 * (k + 1);
+        nu_w[k] = 2 * nu[k];
+        v[3 * k] = 0.3;
+        v[3 * k + 1] = -0.2;
+    }
+    for (int k = NS; k < NS + NW; k++) {
+        x[3 * k] = (k - NS - 1) * l0;
+        role[k] = SOIL_WALL;
+        unk[k] = -1;
+        wn[3 * k + 1] = -1;
+    }
+    x[3 * (N - 1)] = 3 * l0;
+    x[3 * (N - 1) + 1] = 3 * l0;
+    role[N - 1] = SOIL_FLUID;
+    unk[N - 1] = -1;
+    nu[N - 1] = 7;              /* not read: water pairs use nu_f */
+    struct neighbour_list nl = { 0 };
+    assert_int_equal(neighbour_build_brute(&nl, 2, x, N, re), SIM_OK);
+    double *w = weights(&nl, re);
+    struct csr_matrix A = { 0 };
+    size_t cap = 0;
+    int64_t rp[NS + 1];
+    A.rowptr = rp;
+    const int64_t nnz = pop_matrix_rowptr(&nl, N, w, unk, NS, rp);
+    assert_int_equal(csr_reserve(&A, &cap, nnz), SIM_OK);
+    A.n = NS;
+    A.nnz = nnz;
+    double b[3 * NS];
+    const double cdt = 0.7;
+    soil_vp_system(&nl, w, cdt, nu_f, nu, nu_w, role, unk, v, wn, rp, A.col, A.val, b);
+    int row;
+    assert_true(csr_is_symmetric(&A, 1e-14, &row));
+    for (int i = 0; i < NS; i++) {
+        double sum = 0, want = 1;
+        for (int64_t k = rp[i]; k < rp[i + 1]; k++)
+            sum += A.val[k];
+        for (int64_t k = nl.start[i]; k < nl.start[i + 1]; k++) {
+            const int j = nl.j[k];
+            if (w[k] > 0 && role[j] == SOIL_WALL)
+                want += cdt * nu_w[i] * w[k];
+            else if (w[k] > 0 && role[j] == SOIL_FLUID)
+                want += cdt * 2 * nu[i] * nu_f / (nu[i] + nu_f) * w[k];
+        }
+        near(sum, want, 1e-12);
+        /* the walls (v = 0) keep the normal component (-0.2) and drag the
+         * tangential one: the row's right-hand side is v_i plus, per wall
+         * pair, a (0, v_i,y) */
+        double ay = 0;
+        for (int64_t k = nl.start[i]; k < nl.start[i + 1]; k++)
+            if (w[k] > 0 && role[nl.j[k]] == SOIL_WALL)
+                ay += cdt * nu_w[i] * w[k];
+        near(b[3 * i], 0.3, 1e-14);
+        near(b[3 * i + 1], -0.2 * (1 + ay), 1e-14);
+    }
+    /* the pair entries: arithmetic mean of the two soil viscosities */
+    for (int i = 0; i < NS; i++)
+        for (int64_t k = nl.start[i]; k < nl.start[i + 1]; k++) {
+            const int j = nl.j[k];
+            if (!(w[k] > 0) || role[j] != SOIL_SOIL)
+                continue;
+            int64_t e = rp[i] + 1;
+            while (e < rp[i + 1] && A.col[e] != j)
+                e++;
+            assert_true(e < rp[i + 1]);
+            near(-A.val[e], cdt * 0.5 * (nu[i] + nu[j]) * w[k], 1e-14);
+        }
+    free(A.col);
+    free(A.val);
+    free(w);
+    neighbour_free(&nl);
+}
+
 /* constant/soilProperties: the defaults of doc/theory.md K0-03 ... K0-09,
  * and bad entries refused with the file, line and key (unknown names with
  * the valid ones and the nearest). */
@@ -282,6 +416,9 @@ static void test_props(void **s)
     assert_true(p.nu == 1e-3);
     assert_int_equal(props("soilModel liquid; rho 900; nu 2e-3; frictionWeight kernel;\n", &p), SIM_OK);
     assert_true(p.model == SOIL_MODEL_LIQUID && p.rho == 900 && p.nu == 2e-3 && p.kernel_weight == 1);
+    assert_true(p.cohesion == 0 && p.nu_max == 1000);
+    assert_int_equal(props("soilModel viscoplastic; rho 1900; cohesion 10; maxViscosity 500;\n", &p), SIM_OK);
+    assert_true(p.model == SOIL_MODEL_VISCOPLASTIC && p.cohesion == 10 && p.nu_max == 500);
     static const struct { const char *text, *msg; } bad[] = {
         { "soilModel soild; rho 1900;\n", "did you mean 'solid'" },
         { "rho 1900;\nmu -0.1;\n", "constant/soilProperties:2" },
@@ -289,6 +426,9 @@ static void test_props(void **s)
         { "mu 0.5;\n", "rho" },
         { "rho 1900; frictionWeight kernal;\n", "valid: none kernel" },
         { "rho 1900;\n\ncolumnHalfWidth 0;\n", "constant/soilProperties:3" },
+        { "soilModel viscoplastc; rho 1900;\n", "did you mean 'viscoplastic'" },
+        { "rho 1900;\nmaxViscosity 0;\n", "constant/soilProperties:2" },
+        { "rho 1900; cohesion -1;\n", "cohesion" },
     };
     for (size_t k = 0; k < sizeof bad / sizeof *bad; k++) {
         assert_int_not_equal(props(bad[k].text, &p), SIM_OK);
@@ -342,6 +482,8 @@ int main(void)
         cmocka_unit_test(test_drag_momentum),
         cmocka_unit_test(test_props),
         cmocka_unit_test(test_collision_masses),
+        cmocka_unit_test(test_vp_viscosity),
+        cmocka_unit_test(test_vp_system),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
