@@ -16,8 +16,14 @@
  * width: the continuous rho g h^2/2 with h = N dp, short of the
  * h = (N + 1/2) dp of the particle surface by a relative 1/N.
  *
+ * With soil (doc/theory.md K), `phase soil` or `phase water` splits the
+ * load: each wall particle's term times the soil's share s_i of its
+ * fluid neighbours (kernel-weighted, field soilFraction), or 1 - s_i; the
+ * two add up to the whole.
+ *
  * Keys:
  *   patches (obstacle ...);   // wall patch names (constant/particlePatches)
+ *   phase   all;              // all (default) | water | soil
  * Columns: time, then Fx Fy Fz of each patch [N, or N/m in 2-D].
  */
 #include <math.h>
@@ -37,6 +43,7 @@ struct forces {
     int npatches;   /* of the scene at create     */
     int *column;    /* npatches: index in which[] or -1 */
     double *F;      /* 3n work and result         */
+    int phase;      /* enum mps_fo_phase          */
 };
 
 static void destroy(void *data)
@@ -112,6 +119,13 @@ static int create(const struct dict *d, const struct fo_scene *s, void **data)
     int rc = mps_fo_fields_get(d, s, FIELDS, &f);
     if (rc == SIM_OK)
         rc = read_patches(d, s, fo);
+    if (rc == SIM_OK)
+        rc = mps_fo_read_phase(d, s, &fo->phase);
+    if (rc == SIM_OK && fo->phase != MPS_FO_ALL_PHASES && f.phase
+        && !f.soil_frac)
+        rc = dict_error(d, "phase", SIM_ERR_DICT, "phase %s: the cloud has "
+                        "no field soilFraction to split the load by",
+                        fo->phase == MPS_FO_SOIL ? "soil" : "water");
     if (rc != SIM_OK) {
         destroy(fo);
         return rc;
@@ -124,7 +138,9 @@ static int header(void *data, const struct fo_scene *s, FILE *f)
 {
     struct forces *fo = data;
     fprintf(f, "# forces: pressure force sum p dp^(d-1) n on wall patches "
-            "[%s]\n# time", s->dim == 2 ? "N/m" : "N");
+            "[%s]%s\n# time", s->dim == 2 ? "N/m" : "N",
+            fo->phase == MPS_FO_SOIL ? ", the soil's share"
+            : fo->phase == MPS_FO_WATER ? ", the water's share" : "");
     for (int j = 0; j < fo->n; j++) {
         const char *p = s->patch_names[fo->which[j]];
         fprintf(f, " %s_Fx %s_Fy %s_Fz", p, p, p);
@@ -146,6 +162,9 @@ static void sum_forces(const struct mps_fo_fields *f, struct forces *fo,
         if (f->type[i] != 1 || k < 0 || k >= np || fo->column[k] < 0)
             continue;
         double pa = f->p[i] * area;
+        if (fo->phase != MPS_FO_ALL_PHASES && f->soil_frac)
+            pa *= fo->phase == MPS_FO_SOIL ? f->soil_frac[i]
+                                           : 1.0 - f->soil_frac[i];
         for (int c = 0; c < 3; c++)
             F[3 * fo->column[k] + c] += pa * f->normal[3 * i + c];
     }

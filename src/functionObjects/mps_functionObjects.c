@@ -88,6 +88,9 @@ int mps_fo_fields_get(const struct dict *who, const struct fo_scene *s,
     const struct store_field *ph = store_find(s->store, "phase");
     if (ph && ph->type == VTU_INT32 && ph->ncomp == 1)
         f->phase = *ph->ref;
+    const struct store_field *sf = store_find(s->store, "soilFraction");
+    if (sf && sf->type == VTU_FLOAT64 && sf->ncomp == 1)
+        f->soil_frac = *sf->ref;
     return SIM_OK;
 }
 

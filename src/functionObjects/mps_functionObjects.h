@@ -38,6 +38,9 @@
  *   phase          Int32   x1  optional: 1 soil, 0 water (cases with soil,
  *                              doc/theory.md K); front, waveGauges and
  *                              volume select one with the key `phase`
+ *   soilFraction   Float64 x1  optional (cases with soil): of a wall
+ *                              particle, the soil's share of its fluid
+ *                              neighbours; forces splits the load by it
  *
  * scene->spacing = dp [m]; scene->dim = 2 (x-y plane, vertical y) or 3
  * (vertical z); scene->patch_names/npatches name the wall patches;
@@ -83,6 +86,7 @@ struct mps_fo_fields {
     const uint8_t *fs;
     const int64_t *id;
     const int32_t *phase;  /* the optional field "phase", or NULL */
+    const double *soil_frac; /* the optional field "soilFraction", or NULL */
 };
 
 /* Fill f with the fields named in `mask` (others NULL) after checking type

@@ -97,6 +97,10 @@ struct mps_particles {
     int32_t *phase;   /* NULL (no soil) or n: 1 soil, 0 water and walls  */
     double *accel;    /* NULL (no soil) or 3n: acceleration of the last
                          step [m/s^2], which the soil friction (10) reads */
+    double *soil_frac;/* NULL (no soil) or n: wall particles, the soil's
+                         share of their fluid neighbours (kernel-weighted,
+                         the forces function object's phase); fluid ones,
+                         their phase                                    */
 };
 
 struct mps_settings {
@@ -229,7 +233,8 @@ enum {
     MPS_P_INV_EPS = 1u << 0, MPS_P_F_EXT = 1u << 1,
     MPS_P_PPE_SCALE = 1u << 2, MPS_P_CORR_SCALE = 1u << 3,
     MPS_P_PHI = 1u << 4,   /* "volumeFraction", written to fluid.vtu */
-    MPS_P_SOIL = 1u << 5,  /* "phase" and "acceleration", written     */
+    MPS_P_SOIL = 1u << 5,  /* "phase", "acceleration", "soilFraction",
+                              written                                  */
 };
 int mps_particles_add(struct mps_particles *P, unsigned which);
 void mps_particles_free(struct mps_particles *P);

@@ -75,6 +75,9 @@ int mps_particles_add(struct mps_particles *P, unsigned which)
                       1, STORE_WRITE, &P->phase));
         TRY(store_add(st, "acceleration", "of the last step [m/s^2]",
                       VTU_FLOAT64, 3, STORE_WRITE, &P->accel));
+        TRY(store_add(st, "soilFraction", "soil share of a wall particle's "
+                      "fluid neighbours", VTU_FLOAT64, 1, STORE_WRITE,
+                      &P->soil_frac));
     }
     return SIM_OK;
 }

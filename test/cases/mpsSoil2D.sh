@@ -20,7 +20,8 @@
 #              solid, liquid and the bed as water: soil and water past the
 #              gate (x > 0.35 m), all 450 soil particles kept
 #   phase:     function objects on one phase (volume, waveGauges, front
-#              with phase soil / water) count and locate the right particles
+#              with phase soil / water) count and locate the right particles;
+#              forces with phase soil / water split the floor's load
 #   bad input: missing constant/soilProperties named; unknown soilModel
 #              with "did you mean"; phase soil in a case without soil
 NAME=mpsSoil2D; . "$(dirname "$0")/lib/case.sh"
@@ -44,6 +45,7 @@ fo soilVol/type=volume; fo soilVol/phase=soil
 fo waterVol/type=volume; fo waterVol/phase=water
 fo bedTop/type=waveGauges; fo bedTop/phase=soil; fo "bedTop/gaugeLocations=(0.1)"
 fo soilUp/type=front; fo soilUp/phase=soil; fo "soilUp/direction=(0 1 0)"
+for ph in all soil water; do fo "load_$ph/type=forces"; fo "load_$ph/patches=(tank)"; fo "load_$ph/phase=$ph"; done
 if run && grep -q '^End' "$c/log.mpsFluid"; then pass soil_liquid_run
 else fail soil_liquid_run "$(grep -A2 FATAL "$c/log.mpsFluid" | head -3 | tr '\n' ' ')"; fi
 # probes (0.1, 0.0025), (0.1, 0.05), (0.1, 0.15); h_s = 0.1, h_w = 0.2
@@ -63,6 +65,17 @@ if echo "$got" | awk '{ exit !($1 == 200 && $2 == 200 && $3 > 0.095 && $3 < 0.10
    && grep -q '^# only the soil particles' "$pp/bedTop/0/waveGauges.dat"; then
     pass "soil_functionObjects_phase (soil N, water N, bed top, top soil row: $got)"
 else fail soil_functionObjects_phase "'$got' (want 200 200 0.1+-0.005 0.095+-0.005)"; fi
+
+# forces with phase: the floor (tank Fy) carries the bed, whose share is
+# the soil's: Fy(soil) within 10 % of -(rho g h_w + rho_s g h_s) L
+# (L = 0.21 m: 21 floor particles of dp = 0.01 m), the water's share below 5 % of it, and the two add up to
+# the whole to round-off
+got=$(for ph in all soil water; do awk '!/^#/ { v = $3 } END { printf "%s ", v }' "$pp/load_$ph/0/forces.dat" 2>/dev/null; done)
+if echo "$got" | awk '{ e = -(1000 * 9.81 * 0.1 + 1900 * 9.81 * 0.1) * 0.21; d = $1 - $2 - $3; if (d < 0) d = -d
+        r = $2 / e - 1; if (r < 0) r = -r
+        exit !(NF == 3 && d < 1e-9 * -$1 && r < 0.1 && $3 / $1 < 0.05) }'; then
+    pass "soil_forces_phase (tank Fy all, soil, water [N/m]: $got)"
+else fail soil_forces_phase "'$got' (want soil within 10 % of the bed's weight on the floor, water < 5 %, sum = all)"; fi
 
 # --- solid model: runs, fields written, layer at rest, restart ---------------
 setcase solid

@@ -107,6 +107,26 @@ void mps_soil_begin(struct mps_solver *s)
         for (int q = 0; q < 3; q++)
             m->u_old[3 * i + q] = P->u[3 * i + q];
     }
+    /* the soil's share of the load on a wall particle: that of its fluid
+     * neighbours within the number-density radius, by their weights */
+    const struct neighbour_list *nl = &s->nl;
+#pragma omp parallel for schedule(static)
+    for (int i = 0; i < P->n; i++) {
+        if (P->type[i] != MPS_WALL) {
+            P->soil_frac[i] = m->role[i] == SOIL_SOIL;
+            continue;
+        }
+        double ws = 0, wf = 0;
+        for (int64_t k = nl->start[i]; k < nl->start[i + 1]; k++) {
+            const int j = nl->j[k];
+            if (P->type[j] != MPS_FLUID)
+                continue;
+            wf += s->w_n[k];
+            if (P->phase[j] == 1)
+                ws += s->w_n[k];
+        }
+        P->soil_frac[i] = wf > 0 ? ws / wf : 0.0;
+    }
 }
 
 int mps_soil_forces(struct mps_solver *s)

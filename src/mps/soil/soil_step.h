@@ -37,7 +37,8 @@ struct mps_soil {
 int mps_soil_init(struct mps_solver *s);
 void mps_soil_free(struct mps_solver *s);
 
-/* After the neighbour search: roles, densities, ratios, u^m. */
+/* After the neighbour search: roles, densities, ratios, u^m, and the
+ * soil fraction of the wall particles (P->soil_frac). */
 void mps_soil_begin(struct mps_solver *s);
 
 /* Before the prediction: s->soil->acc (the solid model's forces per unit
