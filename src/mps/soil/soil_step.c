@@ -165,11 +165,13 @@ int mps_soil_forces(struct mps_solver *s)
  * which is ~0 for every particle of a sheet a few particles thick: its
  * sliding layer would have no strength at all. It takes instead the
  * larger of that value and the infinite-slope normal stress under the
- * soil above it, rho_s |g| h cos^2(theta): h = the soil column above plus
- * half a spacing (eq. 13's p_h l0 + rho_s |g| l0/2), theta the angle
- * between the outward surface normal -F/|F| (eq. 15) and the vertical. A
- * flat top gets the full weight of the soil above, a vertical face none,
- * as its horizontal stress is zero.
+ * soil above it: rho_s |g| d cos(theta_g), d = h cos(theta_z) the depth
+ * normal to the surface, h the soil column above along the vertical axis
+ * (y in 2-D, z in 3-D; eq. 13's p_h l0 plus half a spacing), theta_g and
+ * theta_z the angles of the inward surface vector F (eq. 15) to gravity
+ * and to the downward axis. With gravity along the axis that is
+ * rho_s |g| h cos^2(theta): a flat top carries the weight of the soil
+ * above, a vertical face nothing (its horizontal stress is zero).
  */
 static int yield_pressure(struct mps_solver *s)
 {
@@ -188,10 +190,14 @@ static int yield_pressure(struct mps_solver *s)
         double F[3];
         pop_surface_vector_row(&in, s->w_n, P->x, P->inv_eps, i, F);
         const double f = sqrt(F[0] * F[0] + F[1] * F[1] + F[2] * F[2]);
-        const double c = f > 0 ? fmax(0.0, (F[0] * g[0] + F[1] * g[1]
-                                            + F[2] * g[2]) / (f * gm)) : 1.0;
+        double cg = 1.0, cz = 1.0;
+        if (f > 0) {
+            cg = fmax(0.0, (F[0] * g[0] + F[1] * g[1] + F[2] * g[2])
+                           / (f * gm));
+            cz = fmax(0.0, -F[P->dim == 2 ? 1 : 2] / f);
+        }
         const double h = (m->p_h[i] + 0.5 * m->rho[i] * gm) * s->dp;
-        m->S[i] = fmax(P->p[i], h * c * c);
+        m->S[i] = fmax(P->p[i], h * cz * cg);
     }
     return SIM_OK;
 }

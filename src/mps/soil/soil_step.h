@@ -18,7 +18,8 @@ struct mps_soil {
     double *rho;        /* density [kg/m^3]                               */
     double *ratio;      /* rho_0/rho: PPE pair weights and correction     */
     double *p_h;        /* column weight, eq. (13) [N/m^3]                */
-    double *S;          /* drag scratch                                   */
+    double *S;          /* scratch: the drag's; p' of the viscoplastic
+                           model (K0-12)                                  */
     double *F, *Fd;     /* 3n friction and drag [N/m^3]                   */
     double *acc;        /* 3n accelerations of the soil forces and of the
                            drag reaction [m/s^2]                          */
