@@ -17,13 +17,15 @@
 #       Fspeak tS    (largest Fx_solids [N], its time; NaN without grains)
 #       P1slope      (least-squares slope of P1 over 3.5-4.5 s [Pa/s]; the
 #       paper: P1 decreases there in every case)
+#       P1late       (the same over 4.5-6 s; NaN for a run that stops
+#       before)
 #       water1 sed1  (fronts at t = 1 s [m])
 #       tend         (last sample: a run that ended early says so)
 set -e
 [ $# -ge 1 ] || { echo "usage: compare.sh Hs0 Hs0.071 ..." >&2; exit 2; }
 HERE="$(cd "$(dirname "$0")" && pwd)"
 join_fo() { for d in $(ls "$1/postProcessing/$2" 2>/dev/null | sort -g); do grep -v '^#' "$1/postProcessing/$2/$d/$3"; done; }
-printf "%-8s %8s %7s %9s %7s %9s %7s %9s %7s %10s %7s %7s %6s\n" Hs arrival vmax Fpeak tF P1peak tP Fspeak tS P1slope water1 sed1 tend
+printf "%-8s %8s %7s %9s %7s %9s %7s %9s %7s %10s %9s %7s %7s %6s\n" Hs arrival vmax Fpeak tF P1peak tP Fspeak tS P1slope P1late water1 sed1 tend
 for c in "$@"; do
     hs=${c##*/}; hs=${hs#Hs}
     tmp="$(mktemp -d)"
@@ -56,10 +58,12 @@ for c in "$@"; do
                                if ($3 != "NaN" && $3 > pm) { pm = $3; tp = t } }
         $4 != "NaN" && (!hs_s++ || $4 > sm) { sm = $4; ts = t }
         t >= 3.5 && t <= 4.5 && $3 != "NaN" { m++; a += t; b += $3; aa += t * t; ab += t * $3 }
+        t >= 4.5 && t <= 6 && $3 != "NaN" { m2++; a2 += t; b2 += $3; aa2 += t * t; ab2 += t * $3 }
         t <= 1 { w1 = $6; s1 = $7 }
-        END { printf "%-8s %8s %7.3f %9.1f %7.3f %9.0f %7.3f %9s %7s %10s %7.3f %7s %6.3g\n", hs,
+        END { printf "%-8s %8s %7.3f %9.1f %7.3f %9.0f %7.3f %9s %7s %10s %9s %7.3f %7s %6.3g\n", hs,
                      arr ? sprintf("%.3f", arr) : "none", vmax, fm, tf, pm, tp,
                      hs_s ? sprintf("%.1f", sm) : "NaN", hs_s ? sprintf("%.3f", ts) : "NaN",
-                     (m > 2 ? sprintf("%.0f", (m * ab - a * b) / (m * aa - a * a)) : "NaN"), w1, s1, t }' \
+                     (m > 2 ? sprintf("%.0f", (m * ab - a * b) / (m * aa - a * a)) : "NaN"),
+                     (m2 > 2 && t >= 5.99 ? sprintf("%.0f", (m2 * ab2 - a2 * b2) / (m2 * aa2 - a2 * a2)) : "NaN"), w1, s1, t }' \
         "$HERE/series_Hs$hs.dat"
 done
