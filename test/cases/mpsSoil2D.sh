@@ -12,7 +12,7 @@
 #              < 5 %, displacement < 0.5 dp)
 #   restart:   0 -> 0.1 s equals 0 -> 0.05 s + restart (the acceleration
 #              of the last step is read back) to round-off
-#   slope:     tutorials/mpsFluid/soilSlope at dp = 10 mm: E5-03, the
+#   slope:     tutorials/mpsFluid/soilSlope as shipped: E5-03, the
 #              deposit's angle within 5 deg of atan(mu), mu = 0.3, 0.577, 1
 #   incline:   tutorials/mpsFluid/soilBlockIncline: E5-04, the middle of
 #              the block at rest at 25 deg and sliding at 35 deg
@@ -125,12 +125,13 @@ sed -i 's/^soilModel .*/soilModel soild;/' "$c/constant/soilProperties"
 if ! run && grep -q "soilProperties:13.*did you mean 'solid'" "$c/log.mpsFluid"; then pass soil_bad_model
 else fail soil_bad_model "$(grep -A2 FATAL "$c/log.mpsFluid" | head -3 | tr '\n' ' ')"; fi
 
-# --- soilSlope, E5-03 (viscoplastic soil, doc/theory.md K.6): at dp = 10 mm
-# the deposit's angle within 5 deg of atan(mu) for mu = 0.3, 0.577, 1
-# (measured 12.3, 32.6, 43.7 deg; at dp = 5 mm 12.3, 28.9, 46.4)
+# --- soilSlope, E5-03 (viscoplastic soil, doc/theory.md K.6): the
+# deposit's angle within 5 deg of atan(mu) for mu = 0.3, 0.577, 1, at the
+# tutorial's dp = 5 mm (12.9, 28.7, 48.1 deg; 45 s). dp = 10 mm is too
+# coarse for the flank fit: 8 columns, one gap in them moved mu = 1 from
+# 43.7 to 35.0 deg between two builds.
 SL="$ROOT/tutorials/mpsFluid/soilSlope"
 rm -rf "$TMP/slope"; cp -r "$SL" "$TMP/slope"
-"$ROOT/bin/dictTool" -case "$TMP/slope" system/particleDict -set dp=0.01 > /dev/null
 got=$(cd "$TMP/slope" && MPSDEM_DIR="$ROOT" ./Allrun 0.3 0.577 1 > /dev/null 2>&1 \
       && for mu in 0.3 0.577 1; do MPSDEM_DIR="$ROOT" validation/repose.sh mu$mu; done | tr '\n' ' ')
 if echo "$got" | awk '{ if (NF != 15) exit 1
@@ -141,7 +142,7 @@ else fail soil_slope_E5-03 "'$got' (want each angle within 5 deg of atan(mu))"; 
 
 # --- soilBlockIncline, E5-04 (viscoplastic soil): the middle of the block
 # at rest at 25 deg (dx < 0.5 dp = 2.5 mm from 0.3 to 0.5 s) and sliding at
-# 35 deg, mu = 0.577 (atan 30 deg; the bisection finds 28.8 deg)
+# 35 deg, mu = 0.577 (atan 30 deg; the bisection finds 28.4 deg)
 BI="$ROOT/tutorials/mpsFluid/soilBlockIncline"
 rm -rf "$TMP/incline"; cp -r "$BI" "$TMP/incline"
 got=$(cd "$TMP/incline" && MPSDEM_DIR="$ROOT" ./Allrun 25 35 > /dev/null 2>&1 \

@@ -207,6 +207,11 @@ int mps_soil_implicit_wanted(const struct mps_solver *s)
     return s->soil && s->S.soil->model == SOIL_MODEL_VISCOPLASTIC;
 }
 
+int mps_soil_shifted(const struct mps_solver *s, int i)
+{
+    return !mps_soil_implicit_wanted(s) || s->P.phase[i] != 1;
+}
+
 int mps_soil_implicit(struct mps_solver *s, double dt, double *v)
 {
     struct mps_soil *m = s->soil;

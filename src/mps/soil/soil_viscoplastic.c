@@ -1,6 +1,6 @@
 /*
  * soil_viscoplastic.c — soil as a regularised Drucker-Prager viscoplastic
- * fluid (doc/theory.md K.6, K0-11 ... K0-14): the yield stress that Kim's
+ * fluid (doc/theory.md K.6, K0-11 ... K0-15): the yield stress that Kim's
  * solid-soil model lacks (its friction acts as a viscosity of ~4e-3 m^2/s,
  * so slopes flatten for ever). Coulomb friction written as a viscosity,
  * in the convention of the mu(I) rheology (Jop, Forterre and Pouliquen

@@ -20,13 +20,15 @@
  * tangentially (Lind et al. 2012 sect. 3.3): n = -F/|F| from eq. (15), so
  * the surface is not pushed outwards. A shift is capped at 0.1 dp. The
  * velocity and pressure are not re-interpolated to the new position (the
- * shift is a small fraction of dp).
+ * shift is a small fraction of dp). Viscoplastic soil is not shifted
+ * (doc/theory.md K0-15).
  */
 #include <math.h>
 
 #include "core/error.h"
 #include "mps/kernel/kernel.h"
 #include "mps/mps.h"
+#include "mps/soil/soil_step.h"
 #include "mps/stabiliser/stabiliser.h"
 #include "particles/operators/operators.h"
 
@@ -69,7 +71,7 @@ static int apply_shifting(struct mps_solver *s, double dt)
 #pragma omp parallel for schedule(static)
     for (int i = 0; i < P->n; i++) {
         double G[3], F[3], d[3] = { 0, 0, 0 };
-        if (P->type[i] == MPS_FLUID) {
+        if (P->type[i] == MPS_FLUID && mps_soil_shifted(s, i)) {
             asymmetry(s, i, G, F);
             for (int q = 0; q < 3; q++)
                 d[q] = -D * G[q];

@@ -7,7 +7,8 @@
  *     alpha = u_max dt,
  *
  * over neighbours within the gradient radius, r0 = dp. Free-surface
- * particles are not shifted (they would be pushed out of the fluid). Key in
+ * particles are not shifted (they would be pushed out of the fluid), nor is
+ * viscoplastic soil (doc/theory.md K0-15). Key in
  * system/mpsSchemes: shiftingCoeff (C, default 0.01 [-]).
  *
  * Reference: R. Xu, P. Stansby, D. Laurence (2009), Accuracy and stability
@@ -18,6 +19,7 @@
 
 #include "core/error.h"
 #include "mps/mps.h"
+#include "mps/soil/soil_step.h"
 #include "mps/stabiliser/stabiliser.h"
 
 static int apply_shifting(struct mps_solver *s, double dt)
@@ -36,7 +38,8 @@ static int apply_shifting(struct mps_solver *s, double dt)
 #pragma omp parallel for schedule(static)
     for (int i = 0; i < P->n; i++) {
         double R[3] = { 0, 0, 0 };
-        if (P->type[i] == MPS_FLUID && P->fs[i] == MPS_INNER)
+        if (P->type[i] == MPS_FLUID && P->fs[i] == MPS_INNER
+            && mps_soil_shifted(s, i))
             for (int64_t k = nl->start[i]; k < nl->start[i + 1]; k++) {
                 double r = nl->r[k];
                 if (r >= re || r == 0)
