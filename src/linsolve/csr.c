@@ -36,14 +36,8 @@ int csr_reserve(struct csr_matrix *A, size_t *cap, int64_t nnz)
     if ((size_t)nnz <= *cap)
         return SIM_OK;
     size_t c = (size_t)nnz + (size_t)nnz / 4 + 64;
-    int32_t *col = sim_realloc(A->col, c * sizeof *col);
-    if (!col)
-        return SIM_ERR_NOMEM;
-    A->col = col;
-    double *val = sim_realloc(A->val, c * sizeof *val);
-    if (!val)
-        return SIM_ERR_NOMEM;
-    A->val = val;
+    SIM_GROW(A->col, c);
+    SIM_GROW(A->val, c);
     *cap = c;
     return SIM_OK;
 }

@@ -53,14 +53,8 @@ static int reserve_entries(struct neighbour_list *nl, int64_t nnz)
     if ((size_t)nnz <= nl->cap_nnz)
         return SIM_OK;
     size_t c = (size_t)nnz + (size_t)nnz / 4 + 64;
-    int32_t *j = sim_realloc(nl->j, c * sizeof *j);
-    if (!j)
-        return SIM_ERR_NOMEM;
-    nl->j = j;
-    double *r = sim_realloc(nl->r, c * sizeof *r);
-    if (!r)
-        return SIM_ERR_NOMEM;
-    nl->r = r;
+    SIM_GROW(nl->j, c);
+    SIM_GROW(nl->r, c);
     nl->cap_nnz = c;
     return SIM_OK;
 }
@@ -70,14 +64,8 @@ static int reserve_candidates(struct neighbour_list *nl, int64_t nnz)
     if ((size_t)nnz <= nl->cap_cand)
         return SIM_OK;
     size_t c = (size_t)nnz + (size_t)nnz / 4 + 64;
-    int32_t *j = sim_realloc(nl->cj, c * sizeof *j);
-    if (!j)
-        return SIM_ERR_NOMEM;
-    nl->cj = j;
-    j = sim_realloc(nl->sj, c * sizeof *j);
-    if (!j)
-        return SIM_ERR_NOMEM;
-    nl->sj = j;
+    SIM_GROW(nl->cj, c);
+    SIM_GROW(nl->sj, c);
     nl->cap_cand = c;
     return SIM_OK;
 }

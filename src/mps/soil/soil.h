@@ -104,8 +104,8 @@ void soil_vp_viscosity(const struct soil_vp_params *p, int dim,
  * w and unk). c_dt = dt 2d/(n0 lambda) of the Laplacian weights w; nu_f
  * the water's viscosity; v (3 per particle) the velocities the step starts
  * from for the soil and the known velocities of the other particles; wn
- * (3 per particle, may be NULL) the normals of wall and dummy particles:
- * a wall then drags the tangential velocity only (K0-13). Writes col, val
+ * (3 per particle) the normals of wall and dummy particles: a wall drags
+ * the tangential velocity only (K0-13). Writes col, val
  * (diagonal first in each row) and b (3 right-hand sides per row,
  * interleaved).
  */

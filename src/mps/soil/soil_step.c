@@ -207,9 +207,9 @@ int mps_soil_implicit_wanted(const struct mps_solver *s)
     return s->soil && s->S.soil->model == SOIL_MODEL_VISCOPLASTIC;
 }
 
-int mps_soil_shifted(const struct mps_solver *s, int i)
+const int32_t *mps_soil_unshifted(const struct mps_solver *s)
 {
-    return !mps_soil_implicit_wanted(s) || s->P.phase[i] != 1;
+    return mps_soil_implicit_wanted(s) ? s->P.phase : NULL;
 }
 
 int mps_soil_implicit(struct mps_solver *s, double dt, double *v)

@@ -49,9 +49,10 @@ int mps_soil_forces(struct mps_solver *s);
 /* Whether the soil model has an implicit viscous step (viscoplastic). */
 int mps_soil_implicit_wanted(const struct mps_solver *s);
 
-/* Whether particle shifting moves particle i: not the viscoplastic soil
- * (doc/theory.md K0-15). Any particle when s has no soil. */
-int mps_soil_shifted(const struct mps_solver *s, int i);
+/* The particles particle shifting leaves alone (doc/theory.md K0-15):
+ * the phase field when the soil is viscoplastic (skip those with phase
+ * 1), NULL otherwise (shift every fluid particle). */
+const int32_t *mps_soil_unshifted(const struct mps_solver *s);
 
 /* The viscoplastic model's implicit viscous step (K.6d): v (3n) holds the
  * velocities the step starts from (soil) and the known velocities of the

@@ -121,7 +121,7 @@ void soil_vp_system(const struct neighbour_list *nl, const double *w,
             if (unk[j] >= 0) {
                 col[pos] = unk[j];
                 val[pos++] = -a;
-            } else if (wn && role[j] != SOIL_FLUID) {
+            } else if (role[j] != SOIL_FLUID) {
                 /* K0-13: the wall drags the tangential velocity only */
                 const double *n = wn + 3 * j;
                 double un = 0;

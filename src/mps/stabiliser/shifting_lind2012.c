@@ -68,10 +68,11 @@ static int apply_shifting(struct mps_solver *s, double dt)
     const double D = s->S.shifting_coeff * s->dp * s->dp;
     const double cap = MAX_SHIFT * s->dp;
     double *dr = s->grad;
+    const int32_t *fixed = mps_soil_unshifted(s);
 #pragma omp parallel for schedule(static)
     for (int i = 0; i < P->n; i++) {
         double G[3], F[3], d[3] = { 0, 0, 0 };
-        if (P->type[i] == MPS_FLUID && mps_soil_shifted(s, i)) {
+        if (P->type[i] == MPS_FLUID && !(fixed && fixed[i] == 1)) {
             asymmetry(s, i, G, F);
             for (int q = 0; q < 3; q++)
                 d[q] = -D * G[q];

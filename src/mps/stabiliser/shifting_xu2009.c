@@ -35,11 +35,12 @@ static int apply_shifting(struct mps_solver *s, double dt)
                                    + P->u[3*i+2]*P->u[3*i+2]));
     const double ca = s->S.shifting_coeff * umax * dt;
     double *dr = s->grad;
+    const int32_t *fixed = mps_soil_unshifted(s);
 #pragma omp parallel for schedule(static)
     for (int i = 0; i < P->n; i++) {
         double R[3] = { 0, 0, 0 };
         if (P->type[i] == MPS_FLUID && P->fs[i] == MPS_INNER
-            && mps_soil_shifted(s, i))
+            && !(fixed && fixed[i] == 1))
             for (int64_t k = nl->start[i]; k < nl->start[i + 1]; k++) {
                 double r = nl->r[k];
                 if (r >= re || r == 0)
