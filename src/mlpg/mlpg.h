@@ -77,7 +77,8 @@ struct mlpg_wall_ops {
                   const double n[2][2], const double g[2]);
 };
 
-extern const struct mlpg_wall_ops mlpg_wall_improved, mlpg_wall_original;
+extern const struct mlpg_wall_ops mlpg_wall_improved, mlpg_wall_consistent,
+    mlpg_wall_original;
 extern const struct mlpg_wall_ops *const mlpg_wall_schemes[];
 extern const struct model_choice mlpg_choices[];
 
@@ -102,6 +103,13 @@ int mlpg_mls(const struct mlpg_cloud *c, const int32_t *cand, int m,
  * singular. */
 int mlpg_sfdi(const struct mlpg_cloud *c, int i, const int32_t *cand, int m,
               double (*a)[2]);
+
+/* The viscous Laplacian (qsfdi.c): lap f_i = sum_k l[k] (f_cand[k] - f_i),
+ * by the second-order weighted least-squares fit on `radius`.
+ * SIM_ERR_NUMERIC when fewer than five independent nodes lie within it. */
+int mlpg_laplacian_coeffs(const struct mlpg_cloud *c, int i,
+                          const int32_t *cand, int m, double radius,
+                          double *l);
 
 /* ---- sub-domains and rows (rows.c) --------------------------------------- */
 
@@ -157,5 +165,10 @@ struct mlpg_system {
  * and val); b has n entries. */
 int mlpg_assemble(const struct mlpg_cloud *c, const struct mlpg_system *S,
                   struct csr_matrix *A, size_t *cap, double *b);
+
+/* The right-hand side alone, for the nodes and Dirichlet set of A's last
+ * assembly (fixed nodes: the matrix does not change). A is not written. */
+int mlpg_rhs(const struct mlpg_cloud *c, const struct mlpg_system *S,
+             const struct csr_matrix *A, double *b);
 
 #endif

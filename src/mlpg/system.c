@@ -20,7 +20,7 @@
 #endif
 
 const struct mlpg_wall_ops *const mlpg_wall_schemes[] = {
-    &mlpg_wall_improved, &mlpg_wall_original, NULL
+    &mlpg_wall_improved, &mlpg_wall_consistent, &mlpg_wall_original, NULL
 };
 
 const struct model_choice mlpg_choices[] = {
@@ -34,36 +34,47 @@ static int node_row(const struct mlpg_cloud *c, const struct mlpg_system *S,
                     const int32_t *cand, int m, double *coef, double *work,
                     double *D)
 {
-    TRY(ops->row(c, i, cand, m, coef, work));
+    if (ops) /* NULL: the right-hand side only */
+        TRY(ops->row(c, i, cand, m, coef, work));
     *D = 0;
     if (S->ustar && S->rho_dt != 0)
         TRY(mlpg_domain_integral(c, i, cand, m, S->ustar, work, D));
     return SIM_OK;
 }
 
-int mlpg_assemble(const struct mlpg_cloud *c, const struct mlpg_system *S,
-                  struct csr_matrix *A, size_t *cap, double *b)
+/* Rows (matrix != 0: coefficients and right-hand side; else the
+ * right-hand side only, into b, of a pattern assembled before). */
+static int build(const struct mlpg_cloud *c, const struct mlpg_system *S,
+                 struct csr_matrix *A, size_t *cap, double *b, int matrix)
 {
     const struct neighbour_list *nl = c->nl;
     const int n = c->n;
     int maxlen = 1;
-    if (!A->rowptr || A->n < n) {
+    if (!matrix) {
+        for (int i = 0; i < n; i++) {
+            int len = (int)(A->rowptr[i + 1] - A->rowptr[i]);
+            if (len > maxlen)
+                maxlen = len;
+        }
+    } else if (!A->rowptr || A->n < n) {
         free(A->rowptr);
         A->rowptr = sim_malloc((size_t)(n + 1) * sizeof *A->rowptr);
         if (!A->rowptr)
             return SIM_ERR_NOMEM;
     }
-    A->n = n;
-    A->rowptr[0] = 0;
-    for (int i = 0; i < n; i++) {
-        int len = c->dirichlet && c->dirichlet[i]
-                ? 1 : 1 + (int)(nl->start[i + 1] - nl->start[i]);
-        A->rowptr[i + 1] = A->rowptr[i] + len;
-        if (len > maxlen)
-            maxlen = len;
+    if (matrix) {
+        A->n = n;
+        A->rowptr[0] = 0;
+        for (int i = 0; i < n; i++) {
+            int len = c->dirichlet && c->dirichlet[i]
+                    ? 1 : 1 + (int)(nl->start[i + 1] - nl->start[i]);
+            A->rowptr[i + 1] = A->rowptr[i] + len;
+            if (len > maxlen)
+                maxlen = len;
+        }
+        TRY(csr_reserve(A, cap, A->rowptr[n]));
+        A->nnz = A->rowptr[n];
     }
-    TRY(csr_reserve(A, cap, A->rowptr[n]));
-    A->nnz = A->rowptr[n];
 
     int nthr = 1;
 #ifdef _OPENMP
@@ -88,8 +99,10 @@ int mlpg_assemble(const struct mlpg_cloud *c, const struct mlpg_system *S,
         for (int i = 0; i < n; i++) {
             int64_t e = A->rowptr[i];
             if (c->dirichlet && c->dirichlet[i]) {
-                A->col[e] = i;
-                A->val[e] = 1;
+                if (matrix) {
+                    A->col[e] = i;
+                    A->val[e] = 1;
+                }
                 b[i] = S->p_given ? S->p_given[i] : 0;
                 continue;
             }
@@ -98,7 +111,8 @@ int mlpg_assemble(const struct mlpg_cloud *c, const struct mlpg_system *S,
             const struct mlpg_wall_ops *ops = wall ? S->wall
                                                    : &mlpg_wall_improved;
             double D = 0;
-            if (node_row(c, S, ops, i, cand, m, coef, work, &D) != SIM_OK) {
+            if (node_row(c, S, matrix ? ops : NULL, i, cand, m, coef, work,
+                         &D) != SIM_OK) {
 #pragma omp critical(mlpg_assemble_err)
                 if (bad < 0 || i < bad)
                     bad = i;
@@ -112,10 +126,11 @@ int mlpg_assemble(const struct mlpg_cloud *c, const struct mlpg_system *S,
             static const double zero[3] = { 0, 0, 0 };
             b[i] = ops->rhs(c, i, S->rho_dt, D,
                             S->ustar ? S->ustar + 3 * i : zero, nseg, ns, g);
-            for (int k = 0; k < m; k++) {
-                A->col[e + k] = cand[k];
-                A->val[e + k] = coef[k];
-            }
+            if (matrix)
+                for (int k = 0; k < m; k++) {
+                    A->col[e + k] = cand[k];
+                    A->val[e + k] = coef[k];
+                }
         }
     }
     int rc = SIM_OK;
@@ -123,12 +138,25 @@ int mlpg_assemble(const struct mlpg_cloud *c, const struct mlpg_system *S,
         double *coef = (double *)buf, *work = coef + maxlen, D;
         int32_t *cand = (int32_t *)(work + 2 * maxlen);
         int m = mlpg_candidates(c, bad, cand);
-        rc = node_row(c, S, c->type[bad] == MLPG_WALL ? S->wall
-                                                      : &mlpg_wall_improved,
+        rc = node_row(c, S, !matrix ? NULL
+                            : c->type[bad] == MLPG_WALL ? S->wall
+                            : &mlpg_wall_improved,
                       bad, cand, m, coef, work, &D);
         if (rc == SIM_OK)
             rc = sim_error(SIM_ERR_INTERNAL, "node %d failed once only", bad);
     }
     free(buf);
     return rc;
+}
+
+int mlpg_assemble(const struct mlpg_cloud *c, const struct mlpg_system *S,
+                  struct csr_matrix *A, size_t *cap, double *b)
+{
+    return build(c, S, A, cap, b, 1);
+}
+
+int mlpg_rhs(const struct mlpg_cloud *c, const struct mlpg_system *S,
+             const struct csr_matrix *A, double *b)
+{
+    return build(c, S, (struct csr_matrix *)A, NULL, b, 0);
 }

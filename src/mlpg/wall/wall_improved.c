@@ -13,6 +13,8 @@
  * side terms reduce to (R/2pi)(rho/dt) n_s.U (4.19; the sign is doc
  * M0-05). Fluid nodes use the same row and right-hand side with no sides.
  */
+#include <math.h>
+
 #include "core/error.h"
 #include "mlpg/mlpg.h"
 
@@ -25,15 +27,43 @@ static int improved_row(const struct mlpg_cloud *c, int i,
     return mlpg_row_rankine(c, i, cand, m, coef, work);
 }
 
-static double improved_rhs(const struct mlpg_cloud *c, int i, double rho_dt,
-                           double D, const double ustar_i[3], int nseg,
-                           const double n[2][2], const double g[2])
+static double side_terms(const struct mlpg_cloud *c, int i, double rho_dt,
+                         double D, const double ustar_i[3], int nseg,
+                         const double n[2][2], const double g[2],
+                         double kappa)
 {
     double b = -rho_dt * D;
     for (int s = 0; s < nseg; s++)
         b -= c->R[i] / TWO_PI
-           * (rho_dt * (n[s][0] * ustar_i[0] + n[s][1] * ustar_i[1]) - g[s]);
+           * (rho_dt * (n[s][0] * ustar_i[0] + n[s][1] * ustar_i[1])
+              - kappa * g[s]);
     return b;
+}
+
+static double improved_rhs(const struct mlpg_cloud *c, int i, double rho_dt,
+                           double D, const double ustar_i[3], int nseg,
+                           const double n[2][2], const double g[2])
+{
+    return side_terms(c, i, rho_dt, D, ustar_i, nseg, n, g, 1);
+}
+
+/* The 2-point Gauss rule on a piece of angle d carries a linear mode of p
+ * as kappa = d cos(d/(2 sqrt 3)) / (2 sin(d/2)) of itself (0.99845 on a
+ * quarter): the half-arc mean of p = p_K + R g_n sin(theta) comes out as
+ * 0.99845 (R/pi) g_n. Scaling the Neumann data by the same kappa makes
+ * the row exact for linear p (doc M0-20). */
+static double consistent_rhs(const struct mlpg_cloud *c, int i,
+                             double rho_dt, double D,
+                             const double ustar_i[3], int nseg,
+                             const double n[2][2], const double g[2])
+{
+    double t0, angle, ns[2][2];
+    int np;
+    mlpg_sector(c, i, &t0, &angle, &np, ns);
+    np = (int)ceil(angle / (TWO_PI / 4) - 1e-9);
+    double d = angle / (np < 1 ? 1 : np);
+    double kappa = d * cos(d / (2 * sqrt(3.0))) / (2 * sin(d / 2));
+    return side_terms(c, i, rho_dt, D, ustar_i, nseg, n, g, kappa);
 }
 
 const struct mlpg_wall_ops mlpg_wall_improved = {
@@ -41,4 +71,11 @@ const struct mlpg_wall_ops mlpg_wall_improved = {
     .reference = "Pan 2022 thesis sect. 4.2, eqs. 4.13-4.20",
     .row = improved_row,
     .rhs = improved_rhs,
+};
+
+const struct mlpg_wall_ops mlpg_wall_consistent = {
+    .name = "improvedConsistent",
+    .reference = "Pan 2022 thesis sect. 4.2 with doc/theory.md M0-20",
+    .row = improved_row,
+    .rhs = consistent_rhs,
 };

@@ -1,0 +1,300 @@
+/*
+ * mlpgFluid — the MLPG_R solver of Pan (2022, PhD thesis ch. 3-4) with its
+ * improved wall scheme: incompressible 2-D flow on a cloud of fluid and
+ * wall nodes (doc/theory.md M; src/mlpg/mlpg_solver.h for the step).
+ *
+ * Reads   system/controlDict, system/mlpgSchemes, system/mlpgSolution,
+ *         constant/transportProperties (rho, nu), constant/g (optional),
+ *         constant/particlePatches (genParticles: dimension 2, dp),
+ *         <startTime>/fluid.vtu (genParticles with `origin` on the tank
+ *         corner and `wallLayers 1`: one layer of wall nodes on the walls)
+ * Writes  <time>/fluid.vtu, fluid.pvd, postProcessing/
+ *
+ * Every key: mlpgFluid.reference beside this file.
+ */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "core/dict.h"
+#include "core/error.h"
+#include "core/gravity.h"
+#include "core/log.h"
+#include "functionObjects/functionObject.h"
+#include "io/vtu.h"
+#include "mlpg/mlpg_solver.h"
+#include "solver/solver.h"
+
+struct fluid {
+    struct solver sv;
+    struct dict *transport, *gravity, *schemes, *solution, *patches;
+    struct mlpg_solver s;
+    double dp, change;               /* max |u^{n+1} - u^n| / dt        */
+    double steady;                   /* stop when change < steady       */
+    double *uold;
+    struct vtu_cloud cloud;
+    struct vtu_field fields[STORE_MAX_FIELDS];
+};
+
+static int read_patches(struct fluid *f)
+{
+    long dim;
+    TRY(app_read_dict(&f->sv.app, "constant/particlePatches", &f->patches));
+    TRY(dict_get_label(f->patches, "dimension", &dim));
+    if (dim != 2)
+        return dict_error(f->patches, "dimension", SIM_ERR_DICT,
+                          "mlpgFluid is 2-D: dimension must be 2");
+    TRY(dict_get_scalar(f->patches, "dp", &f->dp));
+    if (!(f->dp > 0))
+        return dict_error(f->patches, "dp", SIM_ERR_DICT, "dp must be > 0");
+    dict_mark_used(f->patches, "types");
+    dict_mark_used(f->patches, "wallLayers");
+    return SIM_OK;
+}
+
+static int copy_cloud(struct fluid *f, const struct vtu_cloud *c,
+                      const char *path)
+{
+    struct mlpg_solver *s = &f->s;
+    const struct vtu_field *ty, *pa, *ve, *pr, *no;
+    TRY(vtu_require(c, path, "type", VTU_INT32, 1, &ty));
+    TRY(vtu_require(c, path, "patch", VTU_INT32, 1, &pa));
+    TRY(vtu_require(c, path, "velocity", VTU_FLOAT64, 3, &ve));
+    TRY(vtu_require(c, path, "pressure", VTU_FLOAT64, 1, &pr));
+    TRY(vtu_require(c, path, "normal", VTU_FLOAT64, 3, &no));
+    if (c->n > 100000000)
+        return sim_error(SIM_ERR_INPUT, "%s: too many nodes", path);
+    int n = (int)c->n;
+    TRY(mlpg_fields_alloc(s, n));
+    memcpy(s->x, c->points, sizeof *s->x * 3 * n);
+    memcpy(s->u, ve->data, sizeof *s->u * 3 * n);
+    memcpy(s->p, pr->data, sizeof *s->p * n);
+    memcpy(s->normal, no->data, sizeof *s->normal * 3 * n);
+    memcpy(s->type, ty->data, sizeof *s->type * n);
+    memcpy(s->patch, pa->data, sizeof *s->patch * n);
+    for (int i = 0; i < n; i++) {
+        if (s->type[i] == 2)
+            return sim_error(SIM_ERR_INPUT, "%s: node %d is a dummy particle "
+                             "(type 2): MLPG_R has one layer of wall nodes on "
+                             "the wall (system/particleDict: wallLayers 1, "
+                             "origin on the tank's corner)", path, i);
+        if (s->type[i] != MLPG_FLUID && s->type[i] != MLPG_WALL)
+            return sim_error(SIM_ERR_INPUT, "%s: node %d has type %d (0 "
+                             "fluid, 1 wall)", path, i, s->type[i]);
+        if (s->x[3 * i + 2] != 0)
+            return sim_error(SIM_ERR_INPUT, "%s: node %d has z = %g (2-D)",
+                             path, i, s->x[3 * i + 2]);
+        const double *nn = s->normal + 3 * i;
+        if (s->type[i] == MLPG_WALL
+            && fabs(hypot(nn[0], nn[1]) - 1) > 1e-6)
+            return sim_error(SIM_ERR_INPUT, "%s: wall node %d has no unit "
+                             "normal in the x-y plane", path, i);
+    }
+    return SIM_OK;
+}
+
+/* wallVelocity { <name> { patch P; min (..); max (..); velocity (..); } }
+ * of system/mlpgSolution: the wall nodes of patch P inside the box slide
+ * along the wall at the velocity given while they stay in place (a lid, a
+ * conveyor; doc/theory.md M0-14); nodes the velocity is not tangential to
+ * (corners) keep U = 0. */
+static int read_wall_velocity(struct fluid *f)
+{
+    const struct dict *wv;
+    const struct dict_value *list;
+    TRY(dict_find_dict(f->solution, "wallVelocity", &wv));
+    if (!wv)
+        return SIM_OK;
+    TRY(dict_get_list(f->patches, "patches", &list));
+    for (int e = 0; e < dict_size(wv); e++) {
+        const char *key = dict_key_at(wv, e), *name;
+        const struct dict *d;
+        double lo[3], hi[3], U[3];
+        TRY(dict_get_dict(wv, key, &d));
+        TRY(dict_get_string(d, "patch", &name));
+        TRY(dict_get_vector(d, "min", 3, lo));
+        TRY(dict_get_vector(d, "max", 3, hi));
+        TRY(dict_get_vector(d, "velocity", 3, U));
+        int k = -1;
+        for (int q = 0; q < dict_value_len(list); q++)
+            if (!strcmp(dict_value_text(dict_value_at(list, q)), name))
+                k = q;
+        if (k < 0)
+            return dict_error(d, "patch", SIM_ERR_DICT, "no patch '%s' in "
+                              "constant/particlePatches", name);
+        int count = 0;
+        for (int i = 0; i < f->s.n; i++) {
+            const double *x = f->s.x + 3 * i, *nn = f->s.normal + 3 * i;
+            if (f->s.patch[i] != k || f->s.type[i] != MLPG_WALL
+                || x[0] < lo[0] || x[0] > hi[0] || x[1] < lo[1]
+                || x[1] > hi[1])
+                continue;
+            if (fabs(U[0] * nn[0] + U[1] * nn[1]) > 1e-12 * hypot(U[0], U[1]))
+                continue;
+            memcpy(f->s.u + 3 * i, U, sizeof U);
+            count++;
+        }
+        if (!count)
+            return dict_error(d, "min", SIM_ERR_DICT, "wallVelocity %s: no "
+                              "wall node of patch '%s' in the box that the "
+                              "velocity is tangential to", key, name);
+        log_info("wallVelocity %s: %d wall nodes of patch %s slide at (%g "
+                 "%g) m/s", key, count, name, U[0], U[1]);
+    }
+    return SIM_OK;
+}
+
+static int create(struct solver *sv)
+{
+    struct fluid *f = (struct fluid *)sv;
+    struct mlpg_settings S = { 0 };
+    struct linsolve *ls = NULL;
+    const struct dict *ppe;
+    char rel[256], path[4400];
+    struct vtu_cloud c = { 0 };
+    TRY(read_patches(f));
+    TRY(app_read_dict(&sv->app, "constant/transportProperties",
+                      &f->transport));
+    TRY(gravity_case(&sv->app, 2, S.g, &f->gravity));
+    TRY(app_read_dict(&sv->app, "system/mlpgSchemes", &f->schemes));
+    TRY(app_read_dict(&sv->app, "system/mlpgSolution", &f->solution));
+    TRY(mlpg_settings_read(f->transport, f->schemes, f->solution, &S));
+    S.dl = f->dp;
+    TRY(dict_get_dict(f->solution, "PPE", &ppe));
+    snprintf(rel, sizeof rel, "%s/fluid.vtu", sv->rt.name);
+    app_path(&sv->app, rel, path, sizeof path);
+    int rc = vtu_read(path, &c);
+    if (!rc)
+        rc = vtu_check_finite(&c, path);
+    if (!rc)
+        rc = copy_cloud(f, &c, path);
+    vtu_cloud_free(&c);
+    if (rc)
+        return rc;
+    TRY(read_wall_velocity(f));
+    TRY(dict_get_scalar_or(f->solution, "steadyTolerance", 0, &f->steady));
+    TRY(dict_range(f->solution, "steadyTolerance", f->steady, 0, 1e30, 0));
+    TRY(linsolve_create(ppe, &ls));
+    TRY(mlpg_solver_init(&f->s, &S, ls));
+    f->s.time = sv->rt.value;
+    f->uold = sim_calloc(3 * (size_t)f->s.n, sizeof *f->uold);
+    if (!f->uold)
+        return SIM_ERR_NOMEM;
+    TRY(solver_check_unused(sv, f->schemes));
+    TRY(solver_check_unused(sv, f->solution));
+    return solver_check_unused(sv, f->transport);
+}
+
+static int refresh_scene(struct solver *sv)
+{
+    struct fluid *f = (struct fluid *)sv;
+    store_cloud(&f->s.st, sv->rt.value, f->fields, &f->cloud);
+    sv->scene = (struct fo_scene){
+        .time = sv->rt.value, .dt = sv->rt.dt, .step = sv->rt.step,
+        .dim = 2, .cloud_name = "fluid", .store = &f->s.st,
+        .spacing = f->dp, .solver = &f->s };
+    return SIM_OK;
+}
+
+static int advance(struct solver *sv)
+{
+    struct fluid *f = (struct fluid *)sv;
+    memcpy(f->uold, f->s.u, 3 * sizeof *f->uold * (size_t)f->s.n);
+    TRY(mlpg_step(&f->s, sv->rt.dt));
+    double m = 0;
+    for (int i = 0; i < 3 * f->s.n; i++)
+        m = fmax(m, fabs(f->s.u[i] - f->uold[i]));
+    f->change = m / sv->rt.dt;
+    return SIM_OK;
+}
+
+/* steadyTolerance: a steady state ends the run, written (doc M0-14). */
+static int check(struct solver *sv)
+{
+    struct fluid *f = (struct fluid *)sv;
+    if (f->steady > 0 && f->change < f->steady) {
+        log_info("Steady: max|du|/dt = %.3g < steadyTolerance %g at t = %g "
+                 "s: the run ends here", f->change, f->steady, sv->rt.value);
+        sv->rt.end_time = sv->rt.value;
+        sv->rt.write_now = 1;
+    }
+    return SIM_OK;
+}
+
+static int write_fields(struct solver *sv, const char *dir)
+{
+    struct fluid *f = (struct fluid *)sv;
+    char path[4400];
+    TRY(refresh_scene(sv));
+    snprintf(path, sizeof path, "%s/fluid.vtu", dir);
+    return vtu_write(path, &f->cloud, sv->rt.binary);
+}
+
+static void progress(struct solver *sv, char *buf, size_t n)
+{
+    const struct fluid *f = (const struct fluid *)sv;
+    snprintf(buf, n, "PPE: %d iterations, residual %.3g  max|du|/dt %.3g",
+             f->s.last.iters, f->s.last.res_rel, f->change);
+}
+
+static void final_stats(struct solver *sv)
+{
+    const struct fluid *f = (const struct fluid *)sv;
+    const struct mlpg_timers *t = &f->s.t;
+    double ns = (double)f->s.n * (double)(t->steps ? t->steps : 1);
+    log_info("\nMLPG statistics");
+    log_info("    steps                 %ld (neighbour lists built %ld)",
+             t->steps, t->builds);
+    log_info("    PPE iterations        %ld (%.1f per step)", t->ppe_iters,
+             t->steps ? (double)t->ppe_iters / t->steps : 0.0);
+    log_info("    time per node-step [us]: neighbours %.3f  explicit %.3f  "
+             "assembly %.3f  PPE %.3f  correction %.3f",
+             1e6 * t->neighbours / ns, 1e6 * t->explicit_ / ns,
+             1e6 * t->assembly / ns, 1e6 * t->ppe / ns,
+             1e6 * t->correction / ns);
+}
+
+static void cleanup(struct solver *sv)
+{
+    struct fluid *f = (struct fluid *)sv;
+    mlpg_solver_free(&f->s);
+    free(f->uold);
+    dict_free(f->transport);
+    dict_free(f->gravity);
+    dict_free(f->schemes);
+    dict_free(f->solution);
+    dict_free(f->patches);
+}
+
+static void list_models(void)
+{
+    model_choices_print(mlpg_solver_choices, NULL, NULL);
+    model_choices_print(linsolve_choices, "system/mlpgSolution", "PPE/");
+}
+
+static const struct fo_ops *const *const fo_tables[] = {
+    fo_generic_table, NULL };
+
+static const struct solver_ops fluid_ops = {
+    .name = "mlpgFluid",
+    .description = "MLPG_R solver with the improved wall scheme (2-D)",
+    .cloud = "fluid",
+    .list_models = list_models,
+    .create = create,
+    .fo_tables = fo_tables,
+    .refresh_scene = refresh_scene,
+    .advance = advance,
+    .dump_failed_advance = 1,
+    .check = check,
+    .write = write_fields,
+    .progress = progress,
+    .stats = final_stats,
+    .cleanup = cleanup,
+};
+
+int main(int argc, char **argv)
+{
+    static struct fluid f;
+    return solver_main(&fluid_ops, &f.sv, argc, argv);
+}

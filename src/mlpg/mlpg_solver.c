@@ -1,0 +1,352 @@
+/*
+ * mlpg_solver.c — the MLPG_R projection step (doc/theory.md M.8; Pan 2022
+ * thesis sect. 4.1, eqs. 4.5-4.9, 4.22-4.24; algorithm of mlpg_solver.h):
+ *
+ *   1. neighbour list (Lagrangian nodes: every step; fixed: once)
+ *   2. u* = u + dt (nu lap u + g [- u.grad u]) on fluid and wall nodes (C-06)
+ *   3. rows of mlpg.h with g_s = (rho/dt) n_s.(u*_K - U_K) (S-2); the pinned
+ *      node p = pRefValue
+ *   4. solve; u = u* - (dt/rho) grad p (SFDI) on fluid nodes, U on walls
+ *   5. Lagrangian: r += u dt
+ */
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "core/app.h"
+#include "core/dict.h"
+#include "core/error.h"
+#include "core/log.h"
+#include "linsolve/csr.h"
+#include "mlpg/mlpg_solver.h"
+
+#define PI 3.141592653589793
+
+static const int DIM_RHO[7] = { 1, -3, 0, 0, 0, 0, 0 };
+static const int DIM_NU[7] = { 0, 2, -1, 0, 0, 0, 0 };
+
+static const struct model_head nodes_fixed = {
+    "fixed", "Eulerian nodes with advection (doc/theory.md M0-14)" };
+static const struct model_head nodes_lagr = {
+    "lagrangian", "Pan 2022 eq. 4.9" };
+static const struct model_head *const nodes_table[] = {
+    &nodes_fixed, &nodes_lagr, NULL };
+
+static const struct model_head self_mls = { "approximant", "Pan 2022 eq. 4.23" };
+static const struct model_head self_nodal = { "nodal", "doc/theory.md M0-03" };
+static const struct model_head *const self_table[] = {
+    &self_mls, &self_nodal, NULL };
+
+const struct model_choice mlpg_solver_choices[] = {
+    { "system/mlpgSchemes", "wallScheme",
+      (const void *const *)mlpg_wall_schemes },
+    { "system/mlpgSchemes", "nodes", (const void *const *)nodes_table },
+    { "system/mlpgSchemes", "selfTerm", (const void *const *)self_table },
+    { NULL, NULL, NULL }
+};
+
+int mlpg_settings_read(const struct dict *transport,
+                       const struct dict *schemes,
+                       const struct dict *solution, struct mlpg_settings *S)
+{
+    TRY(dict_get_scalar_dim(transport, "rho", DIM_RHO, &S->rho));
+    TRY(dict_range(transport, "rho", S->rho, 0, 1e6, 1));
+    TRY(dict_get_scalar_dim(transport, "nu", DIM_NU, &S->nu));
+    TRY(dict_range(transport, "nu", S->nu, 0, 1e3, 0));
+    TRY(model_select(schemes, "wallScheme", "wall scheme",
+                     (const void *const *)mlpg_wall_schemes, "improved",
+                     (const void **)&S->wall));
+    TRY(model_select_index(schemes, "nodes", "MLPG nodes",
+                           (const void *const *)nodes_table, "lagrangian",
+                           &S->nodes));
+    TRY(model_select_index(schemes, "selfTerm", "MLPG self term",
+                           (const void *const *)self_table, "approximant",
+                           &S->self_nodal));
+    TRY(dict_get_scalar_or(schemes, "supportRadius", 1.85, &S->support));
+    TRY(dict_range(schemes, "supportRadius", S->support, 1.2, 3, 0));
+    TRY(dict_get_scalar_or(schemes, "subdomainRadius", 0.8, &S->radius));
+    TRY(dict_range(schemes, "subdomainRadius", S->radius, 0.1, 1, 0));
+    TRY(dict_get_vector(solution, "pRefPoint", 3, S->pref_point));
+    TRY(dict_get_scalar_or(solution, "pRefValue", 0, &S->pref_value));
+    return SIM_OK;
+}
+
+int mlpg_fields_alloc(struct mlpg_solver *s, int n)
+{
+    struct store *st = &s->st;
+    store_init(st, "field of the MLPG cloud");
+    TRY(store_add(st, "position", "[m]", VTU_FLOAT64, 3,
+                  STORE_POINTS, &s->x));
+    TRY(store_add(st, "velocity", "[m/s]", VTU_FLOAT64, 3, STORE_WRITE,
+                  &s->u));
+    TRY(store_add(st, "pressure", "[Pa]", VTU_FLOAT64, 1, STORE_WRITE,
+                  &s->p));
+    TRY(store_add(st, "type", "0 fluid, 1 wall", VTU_INT32, 1, STORE_WRITE,
+                  &s->type));
+    TRY(store_add(st, "patch", "wall region, -1 fluid", VTU_INT32, 1,
+                  STORE_WRITE, &s->patch));
+    TRY(store_add(st, "normal", "wall: unit, into the solid", VTU_FLOAT64,
+                  3, STORE_WRITE, &s->normal));
+    TRY(store_resize(st, (size_t)n));
+    s->n = n;
+    return SIM_OK;
+}
+
+/* Wall sectors (doc M0-07): a wall node whose normal differs by more
+ * than 30 degrees from every wall node within 1.5 dl, and from at least
+ * two of them, is a container corner with sector pi - (angle between its
+ * neighbours' normals); every other wall node is straight (pi). */
+static void wall_sectors(struct mlpg_solver *s)
+{
+    const struct neighbour_list *nl = &s->nl;
+    const double cos30 = cos(PI / 6), reach = 1.5 * s->S.dl;
+    for (int i = 0; i < s->n; i++) {
+        for (int q = 0; q < 3; q++)
+            s->nin[3 * i + q] = -s->normal[3 * i + q];
+        if (s->type[i] != MLPG_WALL) {
+            s->sector[i] = 2 * PI;
+            continue;
+        }
+        const double *ni = s->normal + 3 * i;
+        int differ = 0, similar = 0, a = -1, b = -1;
+        for (int64_t k = nl->start[i]; k < nl->start[i + 1]; k++) {
+            int j = nl->j[k];
+            if (s->type[j] != MLPG_WALL || nl->r[k] > reach)
+                continue;
+            const double *nj = s->normal + 3 * j;
+            double c = ni[0] * nj[0] + ni[1] * nj[1];
+            if (c >= cos30) {
+                similar++;
+            } else {
+                differ++;
+                if (a < 0)
+                    a = j;
+                else if (b < 0)
+                    b = j;
+            }
+        }
+        s->sector[i] = PI;
+        if (!similar && differ >= 2) {
+            const double *na = s->normal + 3 * a, *nb = s->normal + 3 * b;
+            s->sector[i] = PI - acos(fmax(-1, fmin(1, na[0] * nb[0]
+                                                      + na[1] * nb[1])));
+        }
+    }
+}
+
+static int build_list(struct mlpg_solver *s)
+{
+    double t0 = app_wall_time();
+    const double rc = (s->S.support + s->S.radius) * s->S.dl * 1.001;
+    TRY(cells_build(&s->grid, 2, s->x, s->n, rc / 2, NULL, NULL));
+    if (s->grid.n_outside)
+        return sim_error(SIM_ERR_NUMERIC, "%d MLPG nodes have a non-finite "
+                         "position", s->grid.n_outside);
+    TRY(neighbour_build(&s->nl, &s->grid, s->x, rc));
+    mlpg_radii(&s->c, s->R);
+    s->t.builds++;
+    s->t.neighbours += app_wall_time() - t0;
+    return SIM_OK;
+}
+
+/* Laplacian and SFDI coefficients of every node, per candidate. */
+static int node_coefficients(struct mlpg_solver *s)
+{
+    const struct neighbour_list *nl = &s->nl;
+    s->coef_start = sim_realloc(s->coef_start,
+                                (size_t)(s->n + 1) * sizeof *s->coef_start);
+    if (!s->coef_start)
+        return SIM_ERR_NOMEM;
+    s->coef_start[0] = 0;
+    int maxlen = 1;
+    for (int i = 0; i < s->n; i++) {
+        int m = 1 + (int)(nl->start[i + 1] - nl->start[i]);
+        s->coef_start[i + 1] = s->coef_start[i] + m;
+        maxlen = m > maxlen ? m : maxlen;
+    }
+    size_t ne = (size_t)s->coef_start[s->n];
+    s->lap = sim_realloc(s->lap, ne * sizeof *s->lap);
+    s->sfdi = sim_realloc(s->sfdi, ne * sizeof *s->sfdi);
+    int32_t *cand = sim_malloc((size_t)maxlen * sizeof *cand);
+    if (!s->lap || !s->sfdi || !cand) {
+        free(cand);
+        return SIM_ERR_NOMEM;
+    }
+    int rc = SIM_OK;
+    for (int i = 0; i < s->n && rc == SIM_OK; i++) {
+        int m = mlpg_candidates(&s->c, i, cand);
+        int64_t e = s->coef_start[i];
+        rc = mlpg_laplacian_coeffs(&s->c, i, cand, m, s->nl.rc, s->lap + e);
+        if (rc == SIM_OK)
+            rc = mlpg_sfdi(&s->c, i, cand, m, s->sfdi + e);
+    }
+    free(cand);
+    return rc;
+}
+
+static void neumann(void *ctx, int i, int nseg, const double n[2][2],
+                    double g[2])
+{
+    const struct mlpg_solver *s = ctx;
+    const double rho_dt = s->S.rho / s->last_dt;
+    double du[2] = { s->ustar[3 * i] - s->wallU[3 * i],
+                     s->ustar[3 * i + 1] - s->wallU[3 * i + 1] };
+    for (int k = 0; k < nseg; k++)
+        g[k] = rho_dt * (n[k][0] * du[0] + n[k][1] * du[1]);
+}
+
+int mlpg_solver_init(struct mlpg_solver *s, const struct mlpg_settings *S,
+                     struct linsolve *ls)
+{
+    s->S = *S;
+    s->ls = ls;
+    size_t n = (size_t)s->n;
+    s->ustar = sim_calloc(3 * n, sizeof *s->ustar);
+    s->nin = sim_calloc(3 * n, sizeof *s->nin);
+    s->grad = sim_calloc(3 * n, sizeof *s->grad);
+    s->wallU = sim_calloc(3 * n, sizeof *s->wallU);
+    s->sector = sim_calloc(n, sizeof *s->sector);
+    s->R = sim_calloc(n, sizeof *s->R);
+    s->b = sim_calloc(n, sizeof *s->b);
+    s->dirichlet = sim_calloc(n, 1);
+    if (!s->ustar || !s->nin || !s->grad || !s->wallU || !s->sector
+        || !s->R || !s->b || !s->dirichlet)
+        return SIM_ERR_NOMEM;
+    for (int i = 0; i < s->n; i++)
+        if (s->type[i] == MLPG_WALL)
+            memcpy(s->wallU + 3 * i, s->u + 3 * i, 3 * sizeof(double));
+    s->c = (struct mlpg_cloud){
+        .n = s->n, .dl = S->dl, .rs = S->support * S->dl,
+        .R0 = S->radius * S->dl, .x = s->x, .type = s->type,
+        .normal = s->nin, .sector = s->sector, .R = s->R,
+        .dirichlet = s->dirichlet, .nl = &s->nl,
+        .self_nodal = S->self_nodal,
+    };
+    TRY(build_list(s));
+    wall_sectors(s);
+    int ncorner = 0;
+    for (int i = 0; i < s->n; i++)
+        ncorner += s->type[i] == MLPG_WALL && s->sector[i] < PI - 1e-6;
+    /* the reference node */
+    double best = HUGE_VAL;
+    for (int i = 0; i < s->n; i++) {
+        double d = hypot(s->x[3 * i] - S->pref_point[0],
+                         s->x[3 * i + 1] - S->pref_point[1]);
+        if (d < best) {
+            best = d;
+            s->pin = i;
+        }
+    }
+    if (best > 2 * S->dl)
+        return sim_error(SIM_ERR_INPUT, "system/mlpgSolution: pRefPoint "
+                         "(%g %g) is %g m from the nearest node (more than "
+                         "2 dl): put it inside the domain",
+                         S->pref_point[0], S->pref_point[1], best);
+    s->dirichlet[s->pin] = 1;
+    log_info("MLPG cloud: %d nodes, %d corner nodes; pressure reference "
+             "node %d at (%g %g)", s->n, ncorner, s->pin, s->x[3 * s->pin],
+             s->x[3 * s->pin + 1]);
+    return SIM_OK;
+}
+
+int mlpg_step(struct mlpg_solver *s, double dt)
+{
+    const struct mlpg_settings *S = &s->S;
+    const int fixed = S->nodes == MLPG_NODES_FIXED, n = s->n;
+    double t0 = app_wall_time();
+    s->last_dt = dt;
+    if (!fixed && s->t.steps > 0) /* Lagrangian: the nodes moved */
+        TRY(build_list(s));
+    if (!fixed || !s->assembled)
+        TRY(node_coefficients(s));
+    /* 2. u* on fluid and wall nodes (doc M0-06) */
+#pragma omp parallel for schedule(static)
+    for (int i = 0; i < n; i++) {
+        int64_t e0 = s->coef_start[i], e1 = s->coef_start[i + 1];
+        const int32_t *row = s->nl.j + s->nl.start[i];
+        double lap[2] = { 0, 0 }, gx[2] = { 0, 0 }, gy[2] = { 0, 0 };
+        for (int64_t e = e0 + 1; e < e1; e++) {
+            int j = row[e - e0 - 1];
+            for (int q = 0; q < 2; q++) {
+                double du = s->u[3 * j + q] - s->u[3 * i + q];
+                lap[q] += s->lap[e] * du;
+                gx[q] += s->sfdi[e][0] * du;
+                gy[q] += s->sfdi[e][1] * du;
+            }
+        }
+        for (int q = 0; q < 2; q++) {
+            double a = S->nu * lap[q] + S->g[q];
+            if (fixed)
+                a -= s->u[3 * i] * gx[q] + s->u[3 * i + 1] * gy[q];
+            s->ustar[3 * i + q] = s->u[3 * i + q] + dt * a;
+        }
+        s->ustar[3 * i + 2] = 0;
+    }
+    double t1 = app_wall_time();
+    s->t.explicit_ += t1 - t0;
+    /* 3. rows */
+    double *pg = s->grad; /* p_given: only the pinned entry is read */
+    pg[s->pin] = S->pref_value;
+    struct mlpg_system sys = { .wall = S->wall, .rho_dt = S->rho / dt,
+                               .ustar = s->ustar, .neumann = neumann,
+                               .ctx = s, .p_given = pg };
+    if (!fixed || !s->assembled) {
+        TRY(mlpg_assemble(&s->c, &sys, &s->A, &s->capA, s->b));
+        s->assembled = 1;
+    } else {
+        TRY(mlpg_rhs(&s->c, &sys, &s->A, s->b));
+    }
+    double t2 = app_wall_time();
+    s->t.assembly += t2 - t1;
+    /* 4. solve, correct */
+    TRY(linsolve_solve(s->ls, &s->A, s->b, s->p, &s->last));
+    s->t.ppe_iters += s->last.iters;
+    double t3 = app_wall_time();
+    s->t.ppe += t3 - t2;
+#pragma omp parallel for schedule(static)
+    for (int i = 0; i < n; i++) {
+        if (s->type[i] == MLPG_WALL) {
+            memcpy(s->u + 3 * i, s->wallU + 3 * i, 3 * sizeof(double));
+            continue;
+        }
+        int64_t e0 = s->coef_start[i], e1 = s->coef_start[i + 1];
+        const int32_t *row = s->nl.j + s->nl.start[i];
+        double g[2] = { 0, 0 };
+        for (int64_t e = e0 + 1; e < e1; e++) {
+            double dp = s->p[row[e - e0 - 1]] - s->p[i];
+            g[0] += s->sfdi[e][0] * dp;
+            g[1] += s->sfdi[e][1] * dp;
+        }
+        for (int q = 0; q < 2; q++)
+            s->u[3 * i + q] = s->ustar[3 * i + q] - dt / S->rho * g[q];
+        s->u[3 * i + 2] = 0;
+    }
+    /* 5. Lagrangian nodes move (walls stay: a lid is a conveyor) */
+    if (!fixed)
+        for (int i = 0; i < n; i++)
+            if (s->type[i] != MLPG_WALL)
+                for (int q = 0; q < 2; q++)
+                    s->x[3 * i + q] += s->u[3 * i + q] * dt;
+    for (int i = 0; i < n; i++)
+        for (int q = 0; q < 2; q++)
+            if (!isfinite(s->u[3 * i + q]) || !isfinite(s->p[i]))
+                return sim_error(SIM_ERR_NUMERIC, "MLPG node %d: non-finite "
+                                 "velocity or pressure after the step", i);
+    s->t.correction += app_wall_time() - t3;
+    s->t.steps++;
+    s->time += dt;
+    return SIM_OK;
+}
+
+void mlpg_solver_free(struct mlpg_solver *s)
+{
+    store_free(&s->st);
+    free(s->ustar), free(s->nin), free(s->grad), free(s->wallU);
+    free(s->sector), free(s->R), free(s->b), free(s->dirichlet);
+    free(s->lap), free(s->sfdi), free(s->coef_start);
+    cells_free(&s->grid);
+    neighbour_free(&s->nl);
+    csr_free(&s->A);
+    linsolve_free(s->ls);
+    memset(s, 0, sizeof *s);
+}

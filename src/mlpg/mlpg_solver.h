@@ -1,0 +1,95 @@
+/*
+ * mlpg_solver.h — the MLPG_R flow solver of mlpgFluid (Pan 2022 thesis
+ * sect. 4.1 and App. A; doc/theory.md M.1, M.8): a 2-D cloud of fluid and
+ * wall nodes advanced by Chorin's projection,
+ *
+ *   u*      = u^n + dt (nu lap u^n + g [- (u^n.grad) u^n on fixed nodes])   (4.5)
+ *   A p     = b   (the MLPG_R rows of mlpg.h, at the nodes' positions)      (4.22)
+ *   u^{n+1} = u* - (dt/rho) grad p                                          (4.8)
+ *   r^{n+1} = r^n + u^{n+1} dt   (Lagrangian nodes)                          (4.9)
+ *
+ * Wall nodes carry u* like fluid nodes (doc M0-06) and the wall's velocity
+ * U afterwards (no slip). A wall node's U is its velocity in the start
+ * cloud: a lid is a conveyor whose nodes keep their places. `nodes fixed`
+ * (doc M0-14) keeps every node where it is and adds the advection term
+ * with the SFDI gradient; the matrix, the gradient and Laplacian
+ * coefficients are then made once. A closed domain has its pressure fixed
+ * at one node (pRefPoint, pRefValue; doc M0-08).
+ */
+#ifndef MPSDEM_MLPG_MLPG_SOLVER_H
+#define MPSDEM_MLPG_MLPG_SOLVER_H
+
+#include <stdint.h>
+
+#include "linsolve/linsolve.h"
+#include "mlpg/mlpg.h"
+#include "particles/cells.h"
+#include "particles/neighbour.h"
+#include "particles/store.h"
+
+struct dict;
+
+enum mlpg_nodes { MLPG_NODES_FIXED, MLPG_NODES_LAGRANGIAN };
+
+struct mlpg_settings {
+    double rho, nu, g[3];
+    double dl;
+    const struct mlpg_wall_ops *wall;
+    int nodes;                 /* enum mlpg_nodes                          */
+    int self_nodal;            /* doc M0-03                                */
+    double support, radius;    /* MLS support and R_I, in dl               */
+    double pref_point[3], pref_value;
+};
+
+struct mlpg_timers {
+    long steps, builds, ppe_iters;
+    double neighbours, explicit_, assembly, ppe, correction;
+};
+
+struct mlpg_solver {
+    struct mlpg_settings S;
+    /* the cloud: registered fields of st */
+    struct store st;
+    int n;
+    double *x, *u, *p, *normal; /* normal: genParticles', into the solid */
+    int32_t *type, *patch;
+    /* work */
+    double *ustar, *nin, *sector, *R, *grad, *wallU, *b;
+    uint8_t *dirichlet;
+    double *lap, (*sfdi)[2];   /* per list entry + self (fixed nodes)      */
+    int64_t *coef_start;       /* n + 1: node i's entries                  */
+    int pin;                   /* the reference node                       */
+    struct cell_grid grid;
+    struct neighbour_list nl;
+    struct csr_matrix A;
+    size_t capA;
+    int assembled;             /* fixed nodes: A and coefficients made     */
+    struct linsolve *ls;
+    struct linsolve_stats last;
+    struct mlpg_cloud c;
+    struct mlpg_timers t;
+    double time, last_dt;
+};
+
+/* system/mlpgSchemes and system/mlpgSolution (the PPE sub-dictionary is
+ * read by the caller), constant/transportProperties. */
+int mlpg_settings_read(const struct dict *transport,
+                       const struct dict *schemes,
+                       const struct dict *solution, struct mlpg_settings *S);
+extern const struct model_choice mlpg_solver_choices[];
+
+/* Take the settings and the linear solver (owned from now on); the store
+ * st must hold n nodes with x, u, p, normal, type, patch filled. */
+int mlpg_solver_init(struct mlpg_solver *s, const struct mlpg_settings *S,
+                     struct linsolve *ls);
+
+/* One projection step of dt. */
+int mlpg_step(struct mlpg_solver *s, double dt);
+
+/* Register the cloud's fields in s->st (positions, velocity, pressure,
+ * type, patch, normal) and size it for n nodes. */
+int mlpg_fields_alloc(struct mlpg_solver *s, int n);
+
+void mlpg_solver_free(struct mlpg_solver *s);
+
+#endif
