@@ -57,6 +57,8 @@ struct mlpg_cloud {
     const double *sector;      /* per node: wall, fluid angle [rad]         */
     const double *R;           /* per node: sub-domain radius (mlpg_radii)  */
     const uint8_t *dirichlet;  /* NULL, or 1: p given (free surface, pin)   */
+    const uint8_t *exclude;    /* NULL, or 1: in no other node's row (a    */
+                               /* wall node above the water)               */
     const struct neighbour_list *nl; /* rc >= rs + R0                       */
     int self_nodal;            /* doc M0-03: p_i instead of p(x_i)          */
 };
@@ -123,7 +125,8 @@ void mlpg_radii(const struct mlpg_cloud *c, double *R);
 void mlpg_sector(const struct mlpg_cloud *c, int i, double *theta0,
                  double *angle, int *nseg, double n[2][2]);
 
-/* Candidates of node i's row: i, then row i of the list. Returns m. */
+/* Candidates of node i's row: i, then row i of the list but the excluded
+ * nodes. Returns m (cand NULL: only counts). */
 int mlpg_candidates(const struct mlpg_cloud *c, int i, int32_t *cand);
 
 /* The Rankine-source row of node i over its sector (fluid, and the

@@ -18,6 +18,7 @@
 #include "core/error.h"
 #include "core/log.h"
 #include "linsolve/csr.h"
+#include "particles/operators/surface_quadrant.h"
 #include "mlpg/mlpg_solver.h"
 
 #define PI 3.141592653589793
@@ -32,6 +33,18 @@ static const struct model_head nodes_lagr = {
 static const struct model_head *const nodes_table[] = {
     &nodes_fixed, &nodes_lagr, NULL };
 
+static const struct model_head fs_none = { "none", "closed domain" };
+static const struct model_head fs_quad = {
+    "quadrantColumn", "Ma and Zhou 2009; Pan 2022 eqs. 5.32-5.33" };
+static const struct model_head *const fs_table[] = { &fs_none, &fs_quad,
+                                                     NULL };
+
+static const struct model_head slip_no = { "noSlip", "Pan 2022 sect. 4.3" };
+static const struct model_head slip_free = { "freeSlip",
+                                             "Pan 2022 sect. 4.3.4" };
+static const struct model_head *const slip_table[] = { &slip_no, &slip_free,
+                                                       NULL };
+
 static const struct model_head self_mls = { "approximant", "Pan 2022 eq. 4.23" };
 static const struct model_head self_nodal = { "nodal", "doc/theory.md M0-03" };
 static const struct model_head *const self_table[] = {
@@ -42,6 +55,9 @@ const struct model_choice mlpg_solver_choices[] = {
       (const void *const *)mlpg_wall_schemes },
     { "system/mlpgSchemes", "nodes", (const void *const *)nodes_table },
     { "system/mlpgSchemes", "selfTerm", (const void *const *)self_table },
+    { "system/mlpgSchemes", "freeSurface", (const void *const *)fs_table },
+    { "system/mlpgSchemes", "wallCondition",
+      (const void *const *)slip_table },
     { NULL, NULL, NULL }
 };
 
@@ -66,8 +82,23 @@ int mlpg_settings_read(const struct dict *transport,
     TRY(dict_range(schemes, "supportRadius", S->support, 1.2, 3, 0));
     TRY(dict_get_scalar_or(schemes, "subdomainRadius", 0.8, &S->radius));
     TRY(dict_range(schemes, "subdomainRadius", S->radius, 0.1, 1, 0));
-    TRY(dict_get_vector(solution, "pRefPoint", 3, S->pref_point));
-    TRY(dict_get_scalar_or(solution, "pRefValue", 0, &S->pref_value));
+    TRY(model_select_index(schemes, "freeSurface", "free-surface detector",
+                           (const void *const *)fs_table, "none",
+                           &S->free_surface));
+    TRY(model_select_index(schemes, "wallCondition", "wall condition",
+                           (const void *const *)slip_table, "noSlip",
+                           &S->free_slip));
+    /* a closed domain needs a pressure level; a free surface gives one */
+    S->has_pref = !S->free_surface || dict_has(solution, "pRefPoint");
+    if (S->has_pref) {
+        if (!dict_has(solution, "pRefPoint"))
+            return dict_error(solution, NULL, SIM_ERR_DICT, "pRefPoint: "
+                              "required with freeSurface none (a closed "
+                              "domain: the pressure is fixed at the node "
+                              "nearest to it)");
+        TRY(dict_get_vector(solution, "pRefPoint", 3, S->pref_point));
+        TRY(dict_get_scalar_or(solution, "pRefValue", 0, &S->pref_value));
+    }
     return SIM_OK;
 }
 
@@ -87,6 +118,9 @@ int mlpg_fields_alloc(struct mlpg_solver *s, int n)
                   STORE_WRITE, &s->patch));
     TRY(store_add(st, "normal", "wall: unit, into the solid", VTU_FLOAT64,
                   3, STORE_WRITE, &s->normal));
+    TRY(store_add(st, "pressureFixed", "1: p given (free surface, wall "
+                  "above the water, reference node)", VTU_UINT8, 1,
+                  STORE_WRITE, &s->dirichlet));
     TRY(store_resize(st, (size_t)n));
     s->n = n;
     return SIM_OK;
@@ -152,36 +186,136 @@ static int build_list(struct mlpg_solver *s)
 /* Laplacian and SFDI coefficients of every node, per candidate. */
 static int node_coefficients(struct mlpg_solver *s)
 {
-    const struct neighbour_list *nl = &s->nl;
     s->coef_start = sim_realloc(s->coef_start,
                                 (size_t)(s->n + 1) * sizeof *s->coef_start);
     if (!s->coef_start)
         return SIM_ERR_NOMEM;
     s->coef_start[0] = 0;
-    int maxlen = 1;
-    for (int i = 0; i < s->n; i++) {
-        int m = 1 + (int)(nl->start[i + 1] - nl->start[i]);
-        s->coef_start[i + 1] = s->coef_start[i] + m;
-        maxlen = m > maxlen ? m : maxlen;
-    }
+    for (int i = 0; i < s->n; i++)
+        s->coef_start[i + 1] = s->coef_start[i]
+                             + mlpg_candidates(&s->c, i, NULL);
     size_t ne = (size_t)s->coef_start[s->n];
     s->lap = sim_realloc(s->lap, ne * sizeof *s->lap);
     s->sfdi = sim_realloc(s->sfdi, ne * sizeof *s->sfdi);
-    int32_t *cand = sim_malloc((size_t)maxlen * sizeof *cand);
-    if (!s->lap || !s->sfdi || !cand) {
-        free(cand);
+    s->cand = sim_realloc(s->cand, ne * sizeof *s->cand);
+    if (!s->lap || !s->sfdi || !s->cand)
         return SIM_ERR_NOMEM;
-    }
     int rc = SIM_OK;
     for (int i = 0; i < s->n && rc == SIM_OK; i++) {
-        int m = mlpg_candidates(&s->c, i, cand);
         int64_t e = s->coef_start[i];
+        int32_t *cand = s->cand + e;
+        int m = mlpg_candidates(&s->c, i, cand);
         rc = mlpg_laplacian_coeffs(&s->c, i, cand, m, s->nl.rc, s->lap + e);
         if (rc == SIM_OK)
             rc = mlpg_sfdi(&s->c, i, cand, m, s->sfdi + e);
+        if (rc != SIM_OK && s->type[i] == MLPG_WALL) {
+            /* a wall node above the water, whose neighbours lie on its
+             * wall: no viscous term and no gradient (doc M0-23) */
+            sim_error_clear();
+            rc = SIM_OK;
+            for (int k = 0; k < m; k++)
+                s->lap[e + k] = s->sfdi[e + k][0] = s->sfdi[e + k][1] = 0;
+        }
     }
-    free(cand);
     return rc;
+}
+
+/* Dirichlet rows: the free surface (p = 0) and the reference node. */
+static int dirichlet_nodes(struct mlpg_solver *s)
+{
+    memset(s->dirichlet, 0, (size_t)s->n);
+    memset(s->exclude, 0, (size_t)s->n);
+    /* dry wall nodes, no fluid node within the MLS support: p = 0, outside
+     * the system (doc M0-23) */
+    const struct neighbour_list *nl = &s->nl;
+    const double *g = s->S.g, gn = hypot(g[0], g[1]);
+    const double up[2] = { gn > 0 ? -g[0] / gn : 0, gn > 0 ? -g[1] / gn : 0 };
+    for (int i = 0; i < s->n; i++) {
+        if (s->type[i] != MLPG_WALL)
+            continue;
+        /* wet: water within the MLS support; with a free surface and
+         * gravity not all of it lower than the node by more than half a
+         * spacing, unless the wall faces down (a roof) */
+        const double *ni = s->nin + 3 * i;
+        int height = s->S.free_surface && gn > 0
+                  && up[0] * ni[0] + up[1] * ni[1] > -0.5;
+        int wet = 0;
+        for (int64_t k = nl->start[i]; k < nl->start[i + 1] && !wet; k++) {
+            int j = nl->j[k];
+            double h = up[0] * (s->x[3 * j] - s->x[3 * i])
+                     + up[1] * (s->x[3 * j + 1] - s->x[3 * i + 1]);
+            wet = s->type[j] == MLPG_FLUID && nl->r[k] < s->c.rs
+               && (!height || h >= -0.5 * s->S.dl);
+        }
+        s->dirichlet[i] = s->exclude[i] = !wet;
+    }
+    uint8_t *dry = s->dirichlet;
+    /* a wet wall node whose row cannot be made (the MLS support of a point
+     * of its half disc holds only its own wall: it stands above the
+     * water) is dry too */
+    int maxlen = 1;
+    for (int i = 0; i < s->n; i++)
+        if ((int)(nl->start[i + 1] - nl->start[i]) + 1 > maxlen)
+            maxlen = (int)(nl->start[i + 1] - nl->start[i]) + 1;
+    double *buf = sim_malloc((size_t)maxlen * (3 * sizeof(double)
+                                               + sizeof(int32_t)));
+    if (!buf)
+        return SIM_ERR_NOMEM;
+    for (int i = 0; i < s->n; i++) {
+        if (s->type[i] != MLPG_WALL || dry[i])
+            continue;
+        int32_t *cand = (int32_t *)(buf + 3 * maxlen);
+        int m = mlpg_candidates(&s->c, i, cand);
+        double D;
+        if (s->S.wall->row(&s->c, i, cand, m, buf, buf + maxlen) != SIM_OK
+            || mlpg_domain_integral(&s->c, i, cand, m, s->ustar,
+                                    buf + maxlen, &D) != SIM_OK) {
+            sim_error_clear();
+            dry[i] = s->exclude[i] = 1;
+        }
+    }
+    free(buf);
+    if (s->S.free_surface) {
+        uint8_t *flag = s->fsflag, *counts = s->fsflag + s->n;
+        for (int i = 0; i < s->n; i++) {
+            flag[i] = s->type[i] == MLPG_FLUID; /* the rows to flag */
+            counts[i] = flag[i] || !dry[i];     /* and the neighbours */
+        }
+        pop_surface_quadrant(&s->nl, s->x, 2.5 * s->S.dl, 0.4 * s->S.dl,
+                             flag, counts, flag);
+        for (int i = 0; i < s->n; i++)
+            if (s->type[i] == MLPG_FLUID)
+                dry[i] = flag[i];
+        /* a wet wall node at the waterline: nothing counted in the
+         * 90-degree sector above it (its other sectors are the wall's) */
+        for (int i = 0; gn > 0 && i < s->n; i++) {
+            if (s->type[i] != MLPG_WALL || dry[i])
+                continue;
+            int above = 0;
+            for (int64_t k = nl->start[i]; k < nl->start[i + 1]; k++) {
+                int j = nl->j[k];
+                double dx = s->x[3 * j] - s->x[3 * i];
+                double dy = s->x[3 * j + 1] - s->x[3 * i + 1];
+                double h = up[0] * dx + up[1] * dy;
+                if (counts[j] && nl->r[k] < 2.5 * s->S.dl
+                    && h > fabs(-up[1] * dx + up[0] * dy)) {
+                    above = 1;
+                    break;
+                }
+            }
+            dry[i] = !above;
+        }
+    }
+    s->n_surface = 0;
+    for (int i = 0; i < s->n; i++) {
+        s->n_surface += s->dirichlet[i] && s->type[i] == MLPG_FLUID;
+        s->pgiven[i] = 0;
+    }
+    if (s->pin >= 0) {
+        s->dirichlet[s->pin] = 1;
+        s->pgiven[s->pin] = s->S.pref_value;
+    }
+    return SIM_OK;
 }
 
 static void neumann(void *ctx, int i, int nseg, const double n[2][2],
@@ -203,23 +337,49 @@ int mlpg_solver_init(struct mlpg_solver *s, const struct mlpg_settings *S,
     size_t n = (size_t)s->n;
     s->ustar = sim_calloc(3 * n, sizeof *s->ustar);
     s->nin = sim_calloc(3 * n, sizeof *s->nin);
-    s->grad = sim_calloc(3 * n, sizeof *s->grad);
+    s->pgiven = sim_calloc(n, sizeof *s->pgiven);
     s->wallU = sim_calloc(3 * n, sizeof *s->wallU);
     s->sector = sim_calloc(n, sizeof *s->sector);
     s->R = sim_calloc(n, sizeof *s->R);
     s->b = sim_calloc(n, sizeof *s->b);
-    s->dirichlet = sim_calloc(n, 1);
-    if (!s->ustar || !s->nin || !s->grad || !s->wallU || !s->sector
-        || !s->R || !s->b || !s->dirichlet)
+    s->fsflag = sim_calloc(2 * n, 1);
+    s->exclude = sim_calloc(n, 1);
+    if (!s->ustar || !s->nin || !s->pgiven || !s->wallU || !s->sector
+        || !s->R || !s->b || !s->fsflag || !s->exclude)
         return SIM_ERR_NOMEM;
-    for (int i = 0; i < s->n; i++)
-        if (s->type[i] == MLPG_WALL)
-            memcpy(s->wallU + 3 * i, s->u + 3 * i, 3 * sizeof(double));
+    int moving = 0;
+    for (int g = 0; g < s->ngroups; g++)
+        moving |= wall_motion_moves(&s->groups[g].motion);
+    if (moving && S->nodes == MLPG_NODES_FIXED)
+        return sim_error(SIM_ERR_INPUT, "system/mlpgSchemes: nodes fixed, "
+                         "but a wall group of system/mlpgSolution has a "
+                         "motion: moving walls need nodes lagrangian");
+    if (moving) {
+        s->x0 = sim_malloc(3 * n * sizeof *s->x0);
+        if (!s->x0)
+            return SIM_ERR_NOMEM;
+    }
+    for (int i = 0; i < s->n; i++) {
+        int g = s->group ? s->group[i] : -1;
+        if (s->type[i] != MLPG_WALL || g < 0)
+            continue;
+        const struct wall_motion *m = &s->groups[g].motion;
+        if (wall_motion_moves(m)) { /* the cloud is at the start time */
+            double d[3];
+            wall_motion_displacement(m, s->time, d);
+            wall_motion_velocity(m, s->time, s->wallU + 3 * i);
+            for (int q = 0; q < 3; q++)
+                s->x0[3 * i + q] = s->x[3 * i + q] - d[q];
+        } else {
+            memcpy(s->wallU + 3 * i, s->groups[g].U, 3 * sizeof(double));
+        }
+        memcpy(s->u + 3 * i, s->wallU + 3 * i, 3 * sizeof(double));
+    }
     s->c = (struct mlpg_cloud){
         .n = s->n, .dl = S->dl, .rs = S->support * S->dl,
         .R0 = S->radius * S->dl, .x = s->x, .type = s->type,
         .normal = s->nin, .sector = s->sector, .R = s->R,
-        .dirichlet = s->dirichlet, .nl = &s->nl,
+        .dirichlet = s->dirichlet, .exclude = s->exclude, .nl = &s->nl,
         .self_nodal = S->self_nodal,
     };
     TRY(build_list(s));
@@ -229,7 +389,8 @@ int mlpg_solver_init(struct mlpg_solver *s, const struct mlpg_settings *S,
         ncorner += s->type[i] == MLPG_WALL && s->sector[i] < PI - 1e-6;
     /* the reference node */
     double best = HUGE_VAL;
-    for (int i = 0; i < s->n; i++) {
+    s->pin = -1;
+    for (int i = 0; S->has_pref && i < s->n; i++) {
         double d = hypot(s->x[3 * i] - S->pref_point[0],
                          s->x[3 * i + 1] - S->pref_point[1]);
         if (d < best) {
@@ -237,15 +398,15 @@ int mlpg_solver_init(struct mlpg_solver *s, const struct mlpg_settings *S,
             s->pin = i;
         }
     }
-    if (best > 2 * S->dl)
+    if (S->has_pref && best > 2 * S->dl)
         return sim_error(SIM_ERR_INPUT, "system/mlpgSolution: pRefPoint "
                          "(%g %g) is %g m from the nearest node (more than "
                          "2 dl): put it inside the domain",
                          S->pref_point[0], S->pref_point[1], best);
-    s->dirichlet[s->pin] = 1;
-    log_info("MLPG cloud: %d nodes, %d corner nodes; pressure reference "
-             "node %d at (%g %g)", s->n, ncorner, s->pin, s->x[3 * s->pin],
-             s->x[3 * s->pin + 1]);
+    log_info("MLPG cloud: %d nodes, %d corner nodes", s->n, ncorner);
+    if (s->pin >= 0)
+        log_info("Pressure reference: node %d at (%g %g)", s->pin,
+                 s->x[3 * s->pin], s->x[3 * s->pin + 1]);
     return SIM_OK;
 }
 
@@ -253,20 +414,28 @@ int mlpg_step(struct mlpg_solver *s, double dt)
 {
     const struct mlpg_settings *S = &s->S;
     const int fixed = S->nodes == MLPG_NODES_FIXED, n = s->n;
-    double t0 = app_wall_time();
+    double t0 = app_wall_time(), tnew = s->time + dt;
     s->last_dt = dt;
     if (!fixed && s->t.steps > 0) /* Lagrangian: the nodes moved */
         TRY(build_list(s));
-    if (!fixed || !s->assembled)
+    if (!fixed || !s->assembled) {
+        TRY(dirichlet_nodes(s));
         TRY(node_coefficients(s));
+    }
+    /* U^{n+1} of the walls that move (S-2) */
+    for (int i = 0; s->x0 && i < n; i++) {
+        int g = s->group[i];
+        if (g >= 0 && wall_motion_moves(&s->groups[g].motion))
+            wall_motion_velocity(&s->groups[g].motion, tnew,
+                                 s->wallU + 3 * i);
+    }
     /* 2. u* on fluid and wall nodes (doc M0-06) */
 #pragma omp parallel for schedule(static)
     for (int i = 0; i < n; i++) {
         int64_t e0 = s->coef_start[i], e1 = s->coef_start[i + 1];
-        const int32_t *row = s->nl.j + s->nl.start[i];
         double lap[2] = { 0, 0 }, gx[2] = { 0, 0 }, gy[2] = { 0, 0 };
         for (int64_t e = e0 + 1; e < e1; e++) {
-            int j = row[e - e0 - 1];
+            int j = s->cand[e];
             for (int q = 0; q < 2; q++) {
                 double du = s->u[3 * j + q] - s->u[3 * i + q];
                 lap[q] += s->lap[e] * du;
@@ -285,11 +454,9 @@ int mlpg_step(struct mlpg_solver *s, double dt)
     double t1 = app_wall_time();
     s->t.explicit_ += t1 - t0;
     /* 3. rows */
-    double *pg = s->grad; /* p_given: only the pinned entry is read */
-    pg[s->pin] = S->pref_value;
     struct mlpg_system sys = { .wall = S->wall, .rho_dt = S->rho / dt,
                                .ustar = s->ustar, .neumann = neumann,
-                               .ctx = s, .p_given = pg };
+                               .ctx = s, .p_given = s->pgiven };
     if (!fixed || !s->assembled) {
         TRY(mlpg_assemble(&s->c, &sys, &s->A, &s->capA, s->b));
         s->assembled = 1;
@@ -305,28 +472,46 @@ int mlpg_step(struct mlpg_solver *s, double dt)
     s->t.ppe += t3 - t2;
 #pragma omp parallel for schedule(static)
     for (int i = 0; i < n; i++) {
-        if (s->type[i] == MLPG_WALL) {
+        const int wall = s->type[i] == MLPG_WALL;
+        const int slip = wall && S->free_slip && !s->dirichlet[i]
+                      && fabs(s->sector[i] - PI) < 1e-6; /* dry: U */
+        if (wall && !slip) {
             memcpy(s->u + 3 * i, s->wallU + 3 * i, 3 * sizeof(double));
             continue;
         }
         int64_t e0 = s->coef_start[i], e1 = s->coef_start[i + 1];
-        const int32_t *row = s->nl.j + s->nl.start[i];
         double g[2] = { 0, 0 };
         for (int64_t e = e0 + 1; e < e1; e++) {
-            double dp = s->p[row[e - e0 - 1]] - s->p[i];
+            double dp = s->p[s->cand[e]] - s->p[i];
             g[0] += s->sfdi[e][0] * dp;
             g[1] += s->sfdi[e][1] * dp;
         }
         for (int q = 0; q < 2; q++)
             s->u[3 * i + q] = s->ustar[3 * i + q] - dt / S->rho * g[q];
         s->u[3 * i + 2] = 0;
+        if (slip) { /* tangential part from the flow, normal part U.n */
+            const double *nn = s->nin + 3 * i, *U = s->wallU + 3 * i;
+            double un = U[0] * nn[0] + U[1] * nn[1];
+            double ut = -s->u[3 * i] * nn[1] + s->u[3 * i + 1] * nn[0];
+            s->u[3 * i] = un * nn[0] - ut * nn[1];
+            s->u[3 * i + 1] = un * nn[1] + ut * nn[0];
+        }
     }
-    /* 5. Lagrangian nodes move (walls stay: a lid is a conveyor) */
+    /* 5. Lagrangian nodes move; walls follow their motion (a sliding lid
+     * stays: a conveyor) */
     if (!fixed)
-        for (int i = 0; i < n; i++)
+        for (int i = 0; i < n; i++) {
+            int g = s->group ? s->group[i] : -1;
             if (s->type[i] != MLPG_WALL)
                 for (int q = 0; q < 2; q++)
                     s->x[3 * i + q] += s->u[3 * i + q] * dt;
+            else if (g >= 0 && wall_motion_moves(&s->groups[g].motion)) {
+                double d[3];
+                wall_motion_displacement(&s->groups[g].motion, tnew, d);
+                for (int q = 0; q < 2; q++)
+                    s->x[3 * i + q] = s->x0[3 * i + q] + d[q];
+            }
+        }
     for (int i = 0; i < n; i++)
         for (int q = 0; q < 2; q++)
             if (!isfinite(s->u[3 * i + q]) || !isfinite(s->p[i]))
@@ -341,8 +526,13 @@ int mlpg_step(struct mlpg_solver *s, double dt)
 void mlpg_solver_free(struct mlpg_solver *s)
 {
     store_free(&s->st);
-    free(s->ustar), free(s->nin), free(s->grad), free(s->wallU);
-    free(s->sector), free(s->R), free(s->b), free(s->dirichlet);
+    free(s->ustar), free(s->nin), free(s->pgiven), free(s->wallU);
+    free(s->x0), free(s->group);
+    for (int g = 0; g < s->ngroups; g++)
+        wall_motion_free(&s->groups[g].motion);
+    free(s->groups);
+    free(s->sector), free(s->R), free(s->b);
+    free(s->fsflag), free(s->exclude), free(s->cand);
     free(s->lap), free(s->sfdi), free(s->coef_start);
     cells_free(&s->grid);
     neighbour_free(&s->nl);

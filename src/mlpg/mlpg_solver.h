@@ -24,6 +24,7 @@
 #include "linsolve/linsolve.h"
 #include "mlpg/mlpg.h"
 #include "particles/cells.h"
+#include "particles/motion/motion.h"
 #include "particles/neighbour.h"
 #include "particles/store.h"
 
@@ -31,12 +32,22 @@ struct dict;
 
 enum mlpg_nodes { MLPG_NODES_FIXED, MLPG_NODES_LAGRANGIAN };
 
+/* Wall nodes that move: a patch's nodes inside a box slide in place at a
+ * velocity (a lid) or move rigidly with a motion model (a piston). */
+struct mlpg_wall_group {
+    double U[3];               /* sliding velocity [m/s]                   */
+    struct wall_motion motion; /* none: sliding                            */
+};
+
 struct mlpg_settings {
     double rho, nu, g[3];
     double dl;
     const struct mlpg_wall_ops *wall;
     int nodes;                 /* enum mlpg_nodes                          */
     int self_nodal;            /* doc M0-03                                */
+    int free_surface;          /* quadrant + column detector (M0-22)       */
+    int free_slip;             /* walls: free slip instead of no slip      */
+    int has_pref;              /* pRefPoint given                          */
     double support, radius;    /* MLS support and R_I, in dl               */
     double pref_point[3], pref_value;
 };
@@ -54,11 +65,17 @@ struct mlpg_solver {
     double *x, *u, *p, *normal; /* normal: genParticles', into the solid */
     int32_t *type, *patch;
     /* work */
-    double *ustar, *nin, *sector, *R, *grad, *wallU, *b;
-    uint8_t *dirichlet;
+    double *ustar, *nin, *sector, *R, *pgiven, *wallU, *b;
+    uint8_t *dirichlet, *fsflag, *exclude;
     double *lap, (*sfdi)[2];   /* per list entry + self (fixed nodes)      */
     int64_t *coef_start;       /* n + 1: node i's entries                  */
-    int pin;                   /* the reference node                       */
+    int32_t *cand;             /* per entry: the node (mlpg_candidates)    */
+    int pin;                   /* the reference node, or -1                */
+    int32_t *group;            /* per node: wall group, or -1              */
+    struct mlpg_wall_group *groups;
+    int ngroups;
+    double *x0;                /* moving wall nodes: position at t = 0     */
+    long n_surface;            /* free-surface nodes of the last step      */
     struct cell_grid grid;
     struct neighbour_list nl;
     struct csr_matrix A;
@@ -79,7 +96,9 @@ int mlpg_settings_read(const struct dict *transport,
 extern const struct model_choice mlpg_solver_choices[];
 
 /* Take the settings and the linear solver (owned from now on); the store
- * st must hold n nodes with x, u, p, normal, type, patch filled. */
+ * st must hold n nodes with x, u, p, normal, type, patch filled, and
+ * group/groups set (or NULL: no wall moves; groups owned from now on).
+ * s->time must hold the start time. */
 int mlpg_solver_init(struct mlpg_solver *s, const struct mlpg_settings *S,
                      struct linsolve *ls);
 

@@ -78,9 +78,17 @@ int mlpg_candidates(const struct mlpg_cloud *c, int i, int32_t *cand)
 {
     const struct neighbour_list *nl = c->nl;
     int m = 0;
-    cand[m++] = i;
-    for (int64_t k = nl->start[i]; k < nl->start[i + 1]; k++)
-        cand[m++] = nl->j[k];
+    if (cand)
+        cand[m] = i;
+    m++;
+    for (int64_t k = nl->start[i]; k < nl->start[i + 1]; k++) {
+        int j = nl->j[k];
+        if (c->exclude && c->exclude[j])
+            continue;
+        if (cand)
+            cand[m] = j;
+        m++;
+    }
     return m;
 }
 

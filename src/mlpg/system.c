@@ -47,7 +47,6 @@ static int node_row(const struct mlpg_cloud *c, const struct mlpg_system *S,
 static int build(const struct mlpg_cloud *c, const struct mlpg_system *S,
                  struct csr_matrix *A, size_t *cap, double *b, int matrix)
 {
-    const struct neighbour_list *nl = c->nl;
     const int n = c->n;
     int maxlen = 1;
     if (!matrix) {
@@ -67,7 +66,7 @@ static int build(const struct mlpg_cloud *c, const struct mlpg_system *S,
         A->rowptr[0] = 0;
         for (int i = 0; i < n; i++) {
             int len = c->dirichlet && c->dirichlet[i]
-                    ? 1 : 1 + (int)(nl->start[i + 1] - nl->start[i]);
+                    ? 1 : mlpg_candidates(c, i, NULL);
             A->rowptr[i + 1] = A->rowptr[i] + len;
             if (len > maxlen)
                 maxlen = len;

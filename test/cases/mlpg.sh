@@ -12,8 +12,12 @@
 #     tolerance; measured 0.0081 / 0.0130) with the improved scheme, and
 #     the original scheme farther off (measured 0.030 / 0.037)
 #   restart: 0 -> 1 s equals 0 -> 0.5 s + restart to 1 s (1e-12 relative)
-#   still water, Lagrangian nodes, 1 s: p = rho g (1 - y) with L2 error
-#     < 1e-3 (measured 6e-5), fluid speed < 1e-2 m/s (measured 9e-4)
+#   still water in a closed box, Lagrangian nodes, improved scheme, 1 s:
+#     p = rho g (1 - y) with L2 error < 1e-3 (measured 6e-5), fluid speed
+#     < 1e-2 m/s (measured 9e-4)
+#   still water with a free surface (tutorial stillTank, improvedConsistent,
+#     10 s): pressure L2 < 1e-6 (measured 3.6e-10), displacement < 1e-5 m
+#     (5.3e-8), 79 surface nodes (the top row)
 #   bad input: unknown wallScheme (file:line, did you mean), dummy
 #     particles, pRefPoint outside, a 3-D case: non-zero exit, a message
 #     naming the file, no time directory written
@@ -100,7 +104,7 @@ set_entry system/controlDict endTime 1
 set_entry system/controlDict deltaT 5e-3
 set_entry system/mlpgSolution steadyTolerance 0
 set_entry system/mlpgSolution pRefPoint "(0.5 1 0)"
-awk '/^wallVelocity/ { skip = 1 } !skip' "$c/system/mlpgSolution" > "$c/x" && mv "$c/x" "$c/system/mlpgSolution"
+awk '/^walls/ { skip = 1 } !skip' "$c/system/mlpgSolution" > "$c/x" && mv "$c/x" "$c/system/mlpgSolution"
 if (cd "$c" && "$ROOT/bin/genParticles" > log.genParticles 2>&1 && "$ROOT/bin/mlpgFluid" > log.mlpgFluid 2>&1); then
     r=$("$ROOT/bin/vtuInfo" -dump "$c/1/fluid.vtu" | awk '/^# x/ { for (k = 2; k <= NF; k++) c[$k] = k - 1; next }
         NF > 5 && $1 ~ /^[-0-9.]/ { pa = 1000 * 9.81 * (1 - $2); e = $c["pressure"] - pa; s += e * e; sa += pa * pa
@@ -111,6 +115,19 @@ if (cd "$c" && "$ROOT/bin/genParticles" > log.genParticles 2>&1 && "$ROOT/bin/ml
         && pass mlpg_stillWater || fail mlpg_stillWater "L2, speed '$r'"
 else
     fail mlpg_stillWater "$(grep -A2 FATAL "$c/log.mlpgFluid" | head -3 | tr '\n' ' ')"
+fi
+
+# --- still water with a free surface (tutorials/mlpgFluid/stillTank) ---
+setcase freeSurface "$ROOT/tutorials/mlpgFluid/stillTank"
+if (cd "$c" && "$ROOT/bin/genParticles" > log.genParticles 2>&1 && "$ROOT/bin/mlpgFluid" > log.mlpgFluid 2>&1); then
+    r=$("$c/validation/check.sh" "$c")
+    echo "    $r"
+    echo "$r" | awk '{ gsub(/,/, ""); for (k = 1; k <= NF; k++) { if ($k == "L2") l2 = $(k + 1); if ($k == "displacement") d = $(k + 1)
+                     if ($k == "nodes") s = $(k + 1) } }
+                   END { exit !(l2 < 1e-6 && d < 1e-5 && s == 79) }' \
+        && pass mlpg_freeSurface_still || fail mlpg_freeSurface_still "$r"
+else
+    fail mlpg_freeSurface_still "$(grep -A2 FATAL "$c/log.mlpgFluid" | head -3 | tr '\n' ' ')"
 fi
 
 # --- bad input ---

@@ -94,28 +94,52 @@ static int copy_cloud(struct fluid *f, const struct vtu_cloud *c,
     return SIM_OK;
 }
 
-/* wallVelocity { <name> { patch P; min (..); max (..); velocity (..); } }
- * of system/mlpgSolution: the wall nodes of patch P inside the box slide
- * along the wall at the velocity given while they stay in place (a lid, a
- * conveyor; doc/theory.md M0-14); nodes the velocity is not tangential to
- * (corners) keep U = 0. */
-static int read_wall_velocity(struct fluid *f)
+/* walls { <name> { patch P; min (..); max (..); velocity (..); } } or
+ * { ...; motion { type ...; } } of system/mlpgSolution: the wall nodes of
+ * patch P inside the box slide in place at a velocity tangential to them
+ * (a lid, a conveyor; nodes it is not tangential to, corners, keep 0;
+ * doc/theory.md M0-14) or move rigidly with a motion model of
+ * particles/motion (a piston). */
+static int read_walls(struct fluid *f)
 {
-    const struct dict *wv;
+    struct mlpg_solver *s = &f->s;
+    const struct dict *wd;
     const struct dict_value *list;
-    TRY(dict_find_dict(f->solution, "wallVelocity", &wv));
-    if (!wv)
+    TRY(dict_find_dict(f->solution, "walls", &wd));
+    if (!wd)
         return SIM_OK;
     TRY(dict_get_list(f->patches, "patches", &list));
-    for (int e = 0; e < dict_size(wv); e++) {
-        const char *key = dict_key_at(wv, e), *name;
+    int ng = dict_size(wd);
+    s->groups = sim_calloc((size_t)ng, sizeof *s->groups);
+    s->group = sim_malloc((size_t)s->n * sizeof *s->group);
+    if (!s->groups || !s->group)
+        return SIM_ERR_NOMEM;
+    for (int i = 0; i < s->n; i++)
+        s->group[i] = -1;
+    for (int e = 0; e < ng; e++) {
+        struct mlpg_wall_group *G = &s->groups[e];
+        const char *key = dict_key_at(wd, e), *name;
         const struct dict *d;
-        double lo[3], hi[3], U[3];
-        TRY(dict_get_dict(wv, key, &d));
+        double lo[3], hi[3];
+        wall_motion_init(&G->motion);
+        s->ngroups = e + 1;
+        TRY(dict_get_dict(wd, key, &d));
         TRY(dict_get_string(d, "patch", &name));
         TRY(dict_get_vector(d, "min", 3, lo));
         TRY(dict_get_vector(d, "max", 3, hi));
-        TRY(dict_get_vector(d, "velocity", 3, U));
+        int moves = dict_has(d, "motion");
+        if (moves == dict_has(d, "velocity"))
+            return dict_error(d, NULL, SIM_ERR_DICT, "walls %s: give either "
+                              "velocity (sliding in place) or motion { } "
+                              "(moving)", key);
+        if (moves) {
+            TRY(wall_motion_read(d, 1, 2, f->sv.app.case_abs, &G->motion));
+            if (isfinite(G->motion.remove_at))
+                return dict_error(d, "removeAt", SIM_ERR_DICT, "mlpgFluid "
+                                  "does not remove walls");
+        }
+        else
+            TRY(dict_get_vector(d, "velocity", 3, G->U));
         int k = -1;
         for (int q = 0; q < dict_value_len(list); q++)
             if (!strcmp(dict_value_text(dict_value_at(list, q)), name))
@@ -124,23 +148,29 @@ static int read_wall_velocity(struct fluid *f)
             return dict_error(d, "patch", SIM_ERR_DICT, "no patch '%s' in "
                               "constant/particlePatches", name);
         int count = 0;
-        for (int i = 0; i < f->s.n; i++) {
-            const double *x = f->s.x + 3 * i, *nn = f->s.normal + 3 * i;
-            if (f->s.patch[i] != k || f->s.type[i] != MLPG_WALL
+        for (int i = 0; i < s->n; i++) {
+            const double *x = s->x + 3 * i, *nn = s->normal + 3 * i;
+            if (s->patch[i] != k || s->type[i] != MLPG_WALL
                 || x[0] < lo[0] || x[0] > hi[0] || x[1] < lo[1]
-                || x[1] > hi[1])
+                || x[1] > hi[1] || s->group[i] >= 0)
                 continue;
-            if (fabs(U[0] * nn[0] + U[1] * nn[1]) > 1e-12 * hypot(U[0], U[1]))
+            if (!moves && fabs(G->U[0] * nn[0] + G->U[1] * nn[1])
+                              > 1e-12 * hypot(G->U[0], G->U[1]))
                 continue;
-            memcpy(f->s.u + 3 * i, U, sizeof U);
+            s->group[i] = e;
             count++;
         }
         if (!count)
-            return dict_error(d, "min", SIM_ERR_DICT, "wallVelocity %s: no "
-                              "wall node of patch '%s' in the box that the "
-                              "velocity is tangential to", key, name);
-        log_info("wallVelocity %s: %d wall nodes of patch %s slide at (%g "
-                 "%g) m/s", key, count, name, U[0], U[1]);
+            return dict_error(d, "min", SIM_ERR_DICT, "walls %s: no wall "
+                              "node of patch '%s' in the box%s", key, name,
+                              moves ? "" : " that the velocity is tangential "
+                              "to");
+        if (moves)
+            log_info("walls %s: %d wall nodes of patch %s move (motion %s)",
+                     key, count, name, G->motion.ops->name);
+        else
+            log_info("walls %s: %d wall nodes of patch %s slide at (%g %g) "
+                     "m/s", key, count, name, G->U[0], G->U[1]);
     }
     return SIM_OK;
 }
@@ -172,7 +202,7 @@ static int create(struct solver *sv)
     vtu_cloud_free(&c);
     if (rc)
         return rc;
-    TRY(read_wall_velocity(f));
+    TRY(read_walls(f));
     TRY(dict_get_scalar_or(f->solution, "steadyTolerance", 0, &f->steady));
     TRY(dict_range(f->solution, "steadyTolerance", f->steady, 0, 1e30, 0));
     TRY(linsolve_create(ppe, &ls));
@@ -234,8 +264,9 @@ static int write_fields(struct solver *sv, const char *dir)
 static void progress(struct solver *sv, char *buf, size_t n)
 {
     const struct fluid *f = (const struct fluid *)sv;
-    snprintf(buf, n, "PPE: %d iterations, residual %.3g  max|du|/dt %.3g",
-             f->s.last.iters, f->s.last.res_rel, f->change);
+    snprintf(buf, n, "PPE: %d iterations, residual %.3g  max|du|/dt %.3g"
+             "  surface %ld", f->s.last.iters, f->s.last.res_rel, f->change,
+             f->s.n_surface);
 }
 
 static void final_stats(struct solver *sv)

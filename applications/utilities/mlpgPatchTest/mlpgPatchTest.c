@@ -326,7 +326,7 @@ int main(int argc, char **argv)
         for (int ik = 0; ik < set.nk; ik++)
             for (int id = 0; id < set.ndl; id++) {
                 int N = (int)lround(1 / set.dl[id]);
-                struct result sum = { 0 }, r;
+                struct result sum = { 0 }, r = { 0 };
                 double er2 = 0;
                 int hist_case = fabs(1.0 / N - set.hist_dl) < 1e-6
                              && fabs(set.k[ik] - set.hist_k) < 1e-9;

@@ -13,7 +13,8 @@
 #include "core/select.h"
 
 const struct wall_motion_ops *const wall_motion_models[] = {
-    &wall_motion_none, &wall_motion_translation, &wall_motion_table, NULL
+    &wall_motion_none, &wall_motion_translation, &wall_motion_table,
+    &wall_motion_oscillation, NULL
 };
 
 void wall_motion_init(struct wall_motion *w)

@@ -14,6 +14,7 @@
  *                velocity in [start, end), at rest before and after
  *   table        d linear between the rows "t x y z" of a file, constant
  *                beyond its first and last time
+ *   oscillation  d = amplitude (1 - cos(omega t)): a wavemaker's piston
  *
  * removeAt T: the wall exists for t < T only (T >= 0; 0 removes it before
  * the first step, e.g. the gate of a dam break).
@@ -41,6 +42,7 @@ struct wall_motion {
     const struct wall_motion_ops *ops;  /* &wall_motion_none if no motion */
     double velocity[3];                 /* translation [m/s]              */
     double start, end;                  /* translation: [start, end) [s]  */
+    double amplitude[3], omega;         /* oscillation [m], [rad/s]       */
     size_t nrows;                       /* table                          */
     double *t, *d;                      /* table: times [s], 3 per row [m]*/
     double remove_at;                   /* [s]; INFINITY: never removed   */
@@ -49,6 +51,7 @@ struct wall_motion {
 extern const struct wall_motion_ops wall_motion_none;
 extern const struct wall_motion_ops wall_motion_translation;
 extern const struct wall_motion_ops wall_motion_table;
+extern const struct wall_motion_ops wall_motion_oscillation;
 /* NULL terminated, for model_select. */
 extern const struct wall_motion_ops *const wall_motion_models[];
 
