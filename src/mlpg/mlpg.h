@@ -82,7 +82,6 @@ struct mlpg_wall_ops {
 extern const struct mlpg_wall_ops mlpg_wall_improved, mlpg_wall_consistent,
     mlpg_wall_original;
 extern const struct mlpg_wall_ops *const mlpg_wall_schemes[];
-extern const struct model_choice mlpg_choices[];
 
 /* ---- MLS and SFDI (mls.c) ------------------------------------------------ */
 

@@ -61,6 +61,18 @@ const struct model_choice mlpg_solver_choices[] = {
     { NULL, NULL, NULL }
 };
 
+int mlpg_rows_read(const struct dict *d, int *self_nodal, double *support,
+                   double *radius)
+{
+    TRY(model_select_index(d, "selfTerm", "MLPG self term",
+                           (const void *const *)self_table, "approximant",
+                           self_nodal));
+    TRY(dict_get_scalar_or(d, "supportRadius", 1.85, support));
+    TRY(dict_range(d, "supportRadius", *support, 1.2, 3, 0));
+    TRY(dict_get_scalar_or(d, "subdomainRadius", 0.8, radius));
+    return dict_range(d, "subdomainRadius", *radius, 0.1, 1, 0);
+}
+
 int mlpg_settings_read(const struct dict *transport,
                        const struct dict *schemes,
                        const struct dict *solution, struct mlpg_settings *S)
@@ -75,13 +87,7 @@ int mlpg_settings_read(const struct dict *transport,
     TRY(model_select_index(schemes, "nodes", "MLPG nodes",
                            (const void *const *)nodes_table, "lagrangian",
                            &S->nodes));
-    TRY(model_select_index(schemes, "selfTerm", "MLPG self term",
-                           (const void *const *)self_table, "approximant",
-                           &S->self_nodal));
-    TRY(dict_get_scalar_or(schemes, "supportRadius", 1.85, &S->support));
-    TRY(dict_range(schemes, "supportRadius", S->support, 1.2, 3, 0));
-    TRY(dict_get_scalar_or(schemes, "subdomainRadius", 0.8, &S->radius));
-    TRY(dict_range(schemes, "subdomainRadius", S->radius, 0.1, 1, 0));
+    TRY(mlpg_rows_read(schemes, &S->self_nodal, &S->support, &S->radius));
     TRY(model_select_index(schemes, "freeSurface", "free-surface detector",
                            (const void *const *)fs_table, "none",
                            &S->free_surface));

@@ -88,6 +88,12 @@ struct mlpg_solver {
     double time, last_dt;
 };
 
+/* The keys of the rows: selfTerm (approximant | nodal, doc M0-03),
+ * supportRadius (MLS support / dl, 1.85), subdomainRadius (R_I / dl, 0.8):
+ * shared by mlpgFluid (system/mlpgSchemes) and mlpgPatchTest. */
+int mlpg_rows_read(const struct dict *d, int *self_nodal, double *support,
+                   double *radius);
+
 /* system/mlpgSchemes and system/mlpgSolution (the PPE sub-dictionary is
  * read by the caller), constant/transportProperties. */
 int mlpg_settings_read(const struct dict *transport,

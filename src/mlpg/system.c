@@ -23,12 +23,6 @@ const struct mlpg_wall_ops *const mlpg_wall_schemes[] = {
     &mlpg_wall_improved, &mlpg_wall_consistent, &mlpg_wall_original, NULL
 };
 
-const struct model_choice mlpg_choices[] = {
-    { "system/mlpgSchemes", "wallScheme",
-      (const void *const *)mlpg_wall_schemes },
-    { NULL, NULL, NULL }
-};
-
 static int node_row(const struct mlpg_cloud *c, const struct mlpg_system *S,
                     const struct mlpg_wall_ops *ops, int i,
                     const int32_t *cand, int m, double *coef, double *work,

@@ -34,7 +34,7 @@
 #include "core/files.h"
 #include "core/log.h"
 #include "linsolve/csr.h"
-#include "mlpg/mlpg.h"
+#include "mlpg/mlpg_solver.h"
 #include "particles/cells.h"
 #include "particles/lattice.h"
 #include "particles/neighbour.h"
@@ -123,18 +123,7 @@ static int read_settings(const struct dict *d, struct settings *s)
                 model_unknown((const void *const *)mlpg_wall_schemes,
                               "wall scheme", name, msg, sizeof msg));
     }
-    static const struct model_head self_mls = { "approximant",
-                                                "Pan 2022 eq. 4.23" };
-    static const struct model_head self_nodal = { "nodal", "doc M0-03" };
-    static const struct model_head *const self_table[] = { &self_mls,
-                                                           &self_nodal, NULL };
-    TRY(model_select_index(d, "selfTerm", "MLPG self term",
-                           (const void *const *)self_table, "approximant",
-                           &s->self_nodal));
-    TRY(dict_get_scalar_or(d, "supportRadius", 1.85, &s->support));
-    TRY(dict_range(d, "supportRadius", s->support, 1.2, 3, 0));
-    TRY(dict_get_scalar_or(d, "subdomainRadius", 0.8, &s->radius));
-    TRY(dict_range(d, "subdomainRadius", s->radius, 0.1, 1, 0));
+    TRY(mlpg_rows_read(d, &s->self_nodal, &s->support, &s->radius));
     TRY(dict_get_vector_or(d, "reference", 2, (double[]){ 0.5, 0.5 },
                            s->ref));
     const struct dict *h;
