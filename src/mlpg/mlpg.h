@@ -135,10 +135,20 @@ int mlpg_row_rankine(const struct mlpg_cloud *c, int i, const int32_t *cand,
 
 /* D_i = (1/2pi) int_sector u*_r dr dtheta (S-9), with u* linear on each
  * quarter between node i (its own u*) and the MLS values at the quarter's
- * corner points on the arc. work: m doubles. */
+ * corner points on the arc. work: 5 m doubles. */
 int mlpg_domain_integral(const struct mlpg_cloud *c, int i,
                          const int32_t *cand, int m, const double *ustar,
                          double *work, double *D);
+
+/* The same in two parts, so that nodes that do not move compute the MLS
+ * weights of the arc points once: mlpg_domain_points(i) points (at most
+ * 5), their weights w[a m + k] (mlpg_domain_weights), and D_i from them
+ * (mlpg_domain_sum). */
+int mlpg_domain_points(const struct mlpg_cloud *c, int i);
+int mlpg_domain_weights(const struct mlpg_cloud *c, int i,
+                        const int32_t *cand, int m, double *w);
+double mlpg_domain_sum(const struct mlpg_cloud *c, int i, const int32_t *cand,
+                       int m, const double *w, const double *ustar);
 
 /* (S-9) for one quarter (th1, th2) of radius R, u0 at the centre and the
  * linear coefficients: exposed for the unit tests. */
@@ -159,6 +169,10 @@ struct mlpg_system {
     mlpg_neumann_fn *neumann;  /* wall data                                 */
     void *ctx;
     const double *p_given;     /* Dirichlet values (NULL: 0)                */
+    /* NULL, or the arc weights of every node (mlpg_domain_weights at
+     * dw + dw_start[i]) for the nodes of the last assembly */
+    const double *dw;
+    const int64_t *dw_start;
 };
 
 /* Assemble A p = b over every node (row i = node i): Rankine rows for

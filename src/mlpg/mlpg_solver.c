@@ -206,11 +206,30 @@ static int node_coefficients(struct mlpg_solver *s)
     s->cand = sim_realloc(s->cand, ne * sizeof *s->cand);
     if (!s->lap || !s->sfdi || !s->cand)
         return SIM_ERR_NOMEM;
+    if (s->S.nodes == MLPG_NODES_FIXED) { /* the arc weights, once */
+        s->dw_start = sim_realloc(s->dw_start, (size_t)(s->n + 1)
+                                                   * sizeof *s->dw_start);
+        if (!s->dw_start)
+            return SIM_ERR_NOMEM;
+        s->dw_start[0] = 0;
+        for (int i = 0; i < s->n; i++)
+            s->dw_start[i + 1] = s->dw_start[i]
+                + (s->coef_start[i + 1] - s->coef_start[i])
+                  * mlpg_domain_points(&s->c, i);
+        s->dw = sim_realloc(s->dw, (size_t)s->dw_start[s->n] * sizeof *s->dw);
+        if (!s->dw)
+            return SIM_ERR_NOMEM;
+    }
     int rc = SIM_OK;
     for (int i = 0; i < s->n && rc == SIM_OK; i++) {
         int64_t e = s->coef_start[i];
         int32_t *cand = s->cand + e;
         int m = mlpg_candidates(&s->c, i, cand);
+        if (s->dw && !s->dirichlet[i])
+            rc = mlpg_domain_weights(&s->c, i, cand, m,
+                                     s->dw + s->dw_start[i]);
+        if (rc != SIM_OK)
+            break;
         rc = mlpg_laplacian_coeffs(&s->c, i, cand, m, s->nl.rc, s->lap + e);
         if (rc == SIM_OK)
             rc = mlpg_sfdi(&s->c, i, cand, m, s->sfdi + e);
@@ -263,14 +282,14 @@ static int dirichlet_nodes(struct mlpg_solver *s)
     for (int i = 0; i < s->n; i++)
         if ((int)(nl->start[i + 1] - nl->start[i]) + 1 > maxlen)
             maxlen = (int)(nl->start[i + 1] - nl->start[i]) + 1;
-    double *buf = sim_malloc((size_t)maxlen * (3 * sizeof(double)
+    double *buf = sim_malloc((size_t)maxlen * (6 * sizeof(double)
                                                + sizeof(int32_t)));
     if (!buf)
         return SIM_ERR_NOMEM;
     for (int i = 0; i < s->n; i++) {
         if (s->type[i] != MLPG_WALL || dry[i])
             continue;
-        int32_t *cand = (int32_t *)(buf + 3 * maxlen);
+        int32_t *cand = (int32_t *)(buf + 6 * maxlen);
         int m = mlpg_candidates(&s->c, i, cand);
         double D;
         if (s->S.wall->row(&s->c, i, cand, m, buf, buf + maxlen) != SIM_OK
@@ -462,7 +481,8 @@ int mlpg_step(struct mlpg_solver *s, double dt)
     /* 3. rows */
     struct mlpg_system sys = { .wall = S->wall, .rho_dt = S->rho / dt,
                                .ustar = s->ustar, .neumann = neumann,
-                               .ctx = s, .p_given = s->pgiven };
+                               .ctx = s, .p_given = s->pgiven,
+                               .dw = s->dw, .dw_start = s->dw_start };
     if (!fixed || !s->assembled) {
         TRY(mlpg_assemble(&s->c, &sys, &s->A, &s->capA, s->b));
         s->assembled = 1;
@@ -539,6 +559,7 @@ void mlpg_solver_free(struct mlpg_solver *s)
     free(s->groups);
     free(s->sector), free(s->R), free(s->b);
     free(s->fsflag), free(s->exclude), free(s->cand);
+    free(s->dw), free(s->dw_start);
     free(s->lap), free(s->sfdi), free(s->coef_start);
     cells_free(&s->grid);
     neighbour_free(&s->nl);

@@ -70,6 +70,8 @@ struct mlpg_solver {
     double *lap, (*sfdi)[2];   /* per list entry + self (fixed nodes)      */
     int64_t *coef_start;       /* n + 1: node i's entries                  */
     int32_t *cand;             /* per entry: the node (mlpg_candidates)    */
+    double *dw;                /* fixed nodes: arc weights (mlpg.h)        */
+    int64_t *dw_start;
     int pin;                   /* the reference node, or -1                */
     int32_t *group;            /* per node: wall group, or -1              */
     struct mlpg_wall_group *groups;

@@ -140,54 +140,70 @@ double mlpg_quarter_integral(double R, double th1, double th2,
                     + (cuy + cvx) * (s2 * s2 - s1 * s1));
 }
 
-/* MLS value of u* (2 components) at point p. */
-static int mls_velocity(const struct mlpg_cloud *c, const int32_t *cand,
-                        int m, const double p[2], const double *ustar,
-                        double *phi, double u[2])
+int mlpg_domain_points(const struct mlpg_cloud *c, int i)
 {
-    TRY(mlpg_mls(c, cand, m, p, phi));
-    u[0] = u[1] = 0;
-    for (int k = 0; k < m; k++) {
-        u[0] += phi[k] * ustar[3 * cand[k]];
-        u[1] += phi[k] * ustar[3 * cand[k] + 1];
-    }
-    return SIM_OK;
+    double t0, angle, ns[2][2];
+    int nseg;
+    mlpg_sector(c, i, &t0, &angle, &nseg, ns);
+    return pieces(angle) + 1;
 }
 
-int mlpg_domain_integral(const struct mlpg_cloud *c, int i,
-                         const int32_t *cand, int m, const double *ustar,
-                         double *work, double *D)
+int mlpg_domain_weights(const struct mlpg_cloud *c, int i,
+                        const int32_t *cand, int m, double *w)
 {
     double t0, angle, ns[2][2];
     int nseg;
     mlpg_sector(c, i, &t0, &angle, &nseg, ns);
     const double *xi = c->x + 3 * i, R = c->R[i];
+    const int np = pieces(angle);
+    for (int a = 0; a <= np; a++) {
+        double th = t0 + angle / np * a;
+        double p[2] = { xi[0] + R * cos(th), xi[1] + R * sin(th) };
+        TRY(mlpg_mls(c, cand, m, p, w + (size_t)a * m));
+    }
+    return SIM_OK;
+}
+
+double mlpg_domain_sum(const struct mlpg_cloud *c, int i, const int32_t *cand,
+                       int m, const double *w, const double *ustar)
+{
+    double t0, angle, ns[2][2];
+    int nseg;
+    mlpg_sector(c, i, &t0, &angle, &nseg, ns);
+    const double R = c->R[i];
     const double u0[2] = { ustar[3 * i], ustar[3 * i + 1] };
     const int np = pieces(angle);
     const double d = angle / np;
-    double ua[2], ub[2], xa[2], xb[2], sum = 0;
-    xa[0] = xi[0] + R * cos(t0);
-    xa[1] = xi[1] + R * sin(t0);
-    TRY(mls_velocity(c, cand, m, xa, ustar, work, ua));
+    double u[5][2], sum = 0;
+    for (int a = 0; a <= np; a++) {  /* MLS values of u* on the arc */
+        const double *wa = w + (size_t)a * m;
+        u[a][0] = u[a][1] = 0;
+        for (int k = 0; k < m; k++) {
+            u[a][0] += wa[k] * ustar[3 * cand[k]];
+            u[a][1] += wa[k] * ustar[3 * cand[k] + 1];
+        }
+    }
     for (int a = 0; a < np; a++) {
         double th1 = t0 + d * a, th2 = th1 + d;
-        xb[0] = xi[0] + R * cos(th2);
-        xb[1] = xi[1] + R * sin(th2);
-        TRY(mls_velocity(c, cand, m, xb, ustar, work, ub));
+        const double *ua = u[a], *ub = u[a + 1];
         /* (4.29)-(4.32) with D = (xa-x0)(yb-y0) - (xb-x0)(ya-y0) */
-        double ax = xa[0] - xi[0], ay = xa[1] - xi[1];
-        double bx = xb[0] - xi[0], by = xb[1] - xi[1];
+        double ax = R * cos(th1), ay = R * sin(th1);
+        double bx = R * cos(th2), by = R * sin(th2);
         double det = ax * by - bx * ay;
         double cux = R * ((ua[0] - u0[0]) * by - (ub[0] - u0[0]) * ay) / det;
         double cuy = R * ((ub[0] - u0[0]) * ax - (ua[0] - u0[0]) * bx) / det;
         double cvx = R * ((ua[1] - u0[1]) * by - (ub[1] - u0[1]) * ay) / det;
         double cvy = R * ((ub[1] - u0[1]) * ax - (ua[1] - u0[1]) * bx) / det;
         sum += mlpg_quarter_integral(R, th1, th2, u0, cux, cuy, cvx, cvy);
-        xa[0] = xb[0];
-        xa[1] = xb[1];
-        ua[0] = ub[0];
-        ua[1] = ub[1];
     }
-    *D = sum / TWO_PI;
+    return sum / TWO_PI;
+}
+
+int mlpg_domain_integral(const struct mlpg_cloud *c, int i,
+                         const int32_t *cand, int m, const double *ustar,
+                         double *work, double *D)
+{
+    TRY(mlpg_domain_weights(c, i, cand, m, work));
+    *D = mlpg_domain_sum(c, i, cand, m, work, ustar);
     return SIM_OK;
 }

@@ -31,7 +31,9 @@ static int node_row(const struct mlpg_cloud *c, const struct mlpg_system *S,
     if (ops) /* NULL: the right-hand side only */
         TRY(ops->row(c, i, cand, m, coef, work));
     *D = 0;
-    if (S->ustar && S->rho_dt != 0)
+    if (S->ustar && S->rho_dt != 0 && S->dw)
+        *D = mlpg_domain_sum(c, i, cand, m, S->dw + S->dw_start[i], S->ustar);
+    else if (S->ustar && S->rho_dt != 0)
         TRY(mlpg_domain_integral(c, i, cand, m, S->ustar, work, D));
     return SIM_OK;
 }
@@ -73,8 +75,8 @@ static int build(const struct mlpg_cloud *c, const struct mlpg_system *S,
 #ifdef _OPENMP
     nthr = omp_get_max_threads();
 #endif
-    /* per thread: candidates, coefficients, 2 maxlen of work */
-    size_t per = (size_t)maxlen * (sizeof(int32_t) + 3 * sizeof(double));
+    /* per thread: candidates, coefficients, 5 maxlen of work */
+    size_t per = (size_t)maxlen * (sizeof(int32_t) + 6 * sizeof(double));
     char *buf = sim_malloc((size_t)nthr * per);
     if (!buf)
         return SIM_ERR_NOMEM;
@@ -87,7 +89,7 @@ static int build(const struct mlpg_cloud *c, const struct mlpg_system *S,
 #endif
         double *coef = (double *)(buf + (size_t)t * per);
         double *work = coef + maxlen;
-        int32_t *cand = (int32_t *)(work + 2 * maxlen);
+        int32_t *cand = (int32_t *)(work + 5 * maxlen);
 #pragma omp for schedule(dynamic, 64)
         for (int i = 0; i < n; i++) {
             int64_t e = A->rowptr[i];
@@ -129,7 +131,7 @@ static int build(const struct mlpg_cloud *c, const struct mlpg_system *S,
     int rc = SIM_OK;
     if (bad >= 0) { /* messages are thread-local: make it again here */
         double *coef = (double *)buf, *work = coef + maxlen, D;
-        int32_t *cand = (int32_t *)(work + 2 * maxlen);
+        int32_t *cand = (int32_t *)(work + 5 * maxlen);
         int m = mlpg_candidates(c, bad, cand);
         rc = node_row(c, S, !matrix ? NULL
                             : c->type[bad] == MLPG_WALL ? S->wall

@@ -106,7 +106,7 @@ static double row_dot(const struct cloud *cl, const struct mlpg_wall_ops *w,
                       int i, const double *p)
 {
     int32_t cand[64];
-    double coef[64], work[128];
+    double coef[64], work[5 * 64];
     int m = mlpg_candidates(&cl->c, i, cand);
     assert_true(m <= 64);
     assert_int_equal(w->row(&cl->c, i, cand, m, coef, work), SIM_OK);
@@ -119,7 +119,7 @@ static double row_dot(const struct cloud *cl, const struct mlpg_wall_ops *w,
 static double domain(const struct cloud *cl, int i, const double *ustar)
 {
     int32_t cand[64];
-    double work[128], D;
+    double work[5 * 64], D;
     int m = mlpg_candidates(&cl->c, i, cand);
     assert_int_equal(mlpg_domain_integral(&cl->c, i, cand, m, ustar, work,
                                           &D), SIM_OK);
