@@ -94,14 +94,16 @@ int mlpg_settings_read(const struct dict *transport,
     TRY(model_select_index(schemes, "wallCondition", "wall condition",
                            (const void *const *)slip_table, "noSlip",
                            &S->free_slip));
-    /* a closed domain needs a pressure level; a free surface gives one */
-    S->has_pref = !S->free_surface || dict_has(solution, "pRefPoint");
+    /* a closed domain needs a pressure level; a free surface or an
+     * outlet (fixedPressure) gives one */
+    int open = S->free_surface || dict_has(solution, "fixedPressure");
+    S->has_pref = !open || dict_has(solution, "pRefPoint");
     if (S->has_pref) {
         if (!dict_has(solution, "pRefPoint"))
             return dict_error(solution, NULL, SIM_ERR_DICT, "pRefPoint: "
-                              "required with freeSurface none (a closed "
-                              "domain: the pressure is fixed at the node "
-                              "nearest to it)");
+                              "required in a closed domain (freeSurface "
+                              "none, no fixedPressure): the pressure is "
+                              "fixed at the node nearest to it");
         TRY(dict_get_vector(solution, "pRefPoint", 3, S->pref_point));
         TRY(dict_get_scalar_or(solution, "pRefValue", 0, &S->pref_value));
     }
@@ -336,6 +338,17 @@ static int dirichlet_nodes(struct mlpg_solver *s)
         s->n_surface += s->dirichlet[i] && s->type[i] == MLPG_FLUID;
         s->pgiven[i] = 0;
     }
+    for (int f = 0; f < s->nfixed_p; f++) {
+        const struct mlpg_fixed_pressure *F = &s->fixed_p[f];
+        for (int i = 0; i < s->n; i++) {
+            const double *x = s->x + 3 * i;
+            if (s->type[i] == MLPG_FLUID && x[0] >= F->lo[0]
+                && x[0] <= F->hi[0] && x[1] >= F->lo[1] && x[1] <= F->hi[1]) {
+                s->dirichlet[i] = 1;
+                s->pgiven[i] = F->value;
+            }
+        }
+    }
     if (s->pin >= 0) {
         s->dirichlet[s->pin] = 1;
         s->pgiven[s->pin] = s->S.pref_value;
@@ -499,7 +512,10 @@ int mlpg_step(struct mlpg_solver *s, double dt)
 #pragma omp parallel for schedule(static)
     for (int i = 0; i < n; i++) {
         const int wall = s->type[i] == MLPG_WALL;
-        const int slip = wall && S->free_slip && !s->dirichlet[i]
+        const int grp = s->group ? s->group[i] : -1;
+        const int fs = grp >= 0 && s->groups[grp].free_slip >= 0
+                     ? s->groups[grp].free_slip : S->free_slip;
+        const int slip = wall && fs && !s->dirichlet[i]
                       && fabs(s->sector[i] - PI) < 1e-6; /* dry: U */
         if (wall && !slip) {
             memcpy(s->u + 3 * i, s->wallU + 3 * i, 3 * sizeof(double));
@@ -553,7 +569,7 @@ void mlpg_solver_free(struct mlpg_solver *s)
 {
     store_free(&s->st);
     free(s->ustar), free(s->nin), free(s->pgiven), free(s->wallU);
-    free(s->x0), free(s->group);
+    free(s->x0), free(s->group), free(s->fixed_p);
     for (int g = 0; g < s->ngroups; g++)
         wall_motion_free(&s->groups[g].motion);
     free(s->groups);

@@ -35,8 +35,14 @@ enum mlpg_nodes { MLPG_NODES_FIXED, MLPG_NODES_LAGRANGIAN };
 /* Wall nodes that move: a patch's nodes inside a box slide in place at a
  * velocity (a lid) or move rigidly with a motion model (a piston). */
 struct mlpg_wall_group {
-    double U[3];               /* sliding velocity [m/s]                   */
-    struct wall_motion motion; /* none: sliding                            */
+    double U[3];               /* velocity of nodes that stay [m/s]        */
+    struct wall_motion motion; /* none: the nodes stay                     */
+    int free_slip;             /* -1: the global wallCondition, 0, 1       */
+};
+
+/* Fluid nodes in a box whose pressure is given (an outlet). */
+struct mlpg_fixed_pressure {
+    double lo[3], hi[3], value;
 };
 
 struct mlpg_settings {
@@ -77,6 +83,8 @@ struct mlpg_solver {
     struct mlpg_wall_group *groups;
     int ngroups;
     double *x0;                /* moving wall nodes: position at t = 0     */
+    struct mlpg_fixed_pressure *fixed_p;
+    int nfixed_p;
     long n_surface;            /* free-surface nodes of the last step      */
     struct cell_grid grid;
     struct neighbour_list nl;
@@ -105,7 +113,8 @@ extern const struct model_choice mlpg_solver_choices[];
 
 /* Take the settings and the linear solver (owned from now on); the store
  * st must hold n nodes with x, u, p, normal, type, patch filled, and
- * group/groups set (or NULL: no wall moves; groups owned from now on).
+ * group/groups set (or NULL: no wall moves; groups owned from now on),
+ * fixed_p/nfixed_p (owned from now on).
  * s->time must hold the start time. */
 int mlpg_solver_init(struct mlpg_solver *s, const struct mlpg_settings *S,
                      struct linsolve *ls);

@@ -18,9 +18,13 @@
 #   still water with a free surface (tutorial stillTank, improvedConsistent,
 #     10 s): pressure L2 < 1e-6 (measured 3.6e-10), displacement < 1e-5 m
 #     (5.3e-8), 79 surface nodes (the top row)
+#   cylinder (the tutorial: 24 surface nodes, inlet, outlet), Re 40, 1 s
+#     after the impulsive start: the recirculation behind it grows to
+#     L_wake/D = 0.93 (0.8-1.1; the run's number, a regression check)
 #   bad input: unknown wallScheme (file:line, did you mean), dummy
 #     particles, pRefPoint outside, a 3-D case: non-zero exit, a message
-#     naming the file, no time directory written
+#     naming the file, no time directory written; genParticles refuses
+#     surfaceNodes on a box (file:line), writing nothing
 NAME=mlpg; . "$(dirname "$0")/lib/case.sh"
 need_bins mlpgFluid mlpgPatchTest genParticles vtuInfo dictTool
 export MPSDEM_DIR="$ROOT"
@@ -130,6 +134,20 @@ else
     fail mlpg_freeSurface_still "$(grep -A2 FATAL "$c/log.mlpgFluid" | head -3 | tr '\n' ' ')"
 fi
 
+# --- cylinder (tutorials/mlpgFluid/cylinder, Re 40, the first second) ---
+setcase cylinder "$ROOT/tutorials/mlpgFluid/cylinder"
+set_entry system/controlDict endTime 1
+set_entry system/controlDict writeInterval 1
+if (cd "$c" && "$ROOT/bin/genParticles" > log.genParticles 2>&1 && "$ROOT/bin/mlpgFluid" > log.mlpgFluid 2>&1) \
+   && grep -q "Region cylinder: 24 nodes on its circle" "$c/log.genParticles"; then
+    w=$("$c/validation/wake.sh" "$c" | awk '$1 == "wake" { print $2 }')
+    echo "    cylinder, Re 40, t = 1 s after the impulsive start: L_wake/D $w"
+    awk -v w="$w" 'BEGIN { exit !(w > 0.8 && w < 1.1) }' && pass mlpg_cylinder_wake \
+        || fail mlpg_cylinder_wake "L_wake/D '$w' (0.928 measured at t = 1 s)"
+else
+    fail mlpg_cylinder_wake "$(grep -h -A2 FATAL "$c"/log.* | head -3 | tr '\n' ' ')"
+fi
+
 # --- bad input ---
 bad() { # name expected-regexp
     local out
@@ -157,4 +175,14 @@ sed -i 's/^dimension .*/dimension 3;/; s/(1 1 0)/(1 1 1)/g' "$c/system/particleD
 set_entry system/particleDict wallLayers 1
 (cd "$c" && "$ROOT/bin/genParticles" > log.genParticles 2>&1)
 bad dimension "constant/particlePatches:[0-9]+.*dimension must be 2"
+# surfaceNodes on anything but a circle: refused by genParticles
+setcase badSurface "$ROOT/tutorials/mlpgFluid/cylinder"
+sed -i 's/shape   sphere;                         \/\/ 2-D: a circle/shape box; min (0.48 0.28 0); max (0.52 0.32 0);/; /centre  (0.5/d; /radius  0.02;/d' "$c/system/particleDict"
+out=$(cd "$c" && "$ROOT/bin/genParticles" 2>&1); rc=$?
+if [ $rc -ne 0 ] && echo "$out" | grep -qE "system/particleDict:[0-9]+:[0-9]+: region 'cylinder': surfaceNodes is for a circle" \
+   && [ ! -f "$c/0/fluid.vtu" ]; then
+    pass mlpg_bad_surfaceNodes
+else
+    fail mlpg_bad_surfaceNodes "rc $rc: $(echo "$out" | grep -A1 FATAL | tail -1)"
+fi
 exit $((fails > 0))

@@ -140,6 +140,12 @@ static int read_walls(struct fluid *f)
         }
         else
             TRY(dict_get_vector(d, "velocity", 3, G->U));
+        int through = 0;
+        TRY(dict_get_bool_or(d, "through", 0, &through));
+        static const char *const conds[] = { "noSlip", "freeSlip", NULL };
+        G->free_slip = -1;
+        if (dict_has(d, "condition"))
+            TRY(dict_get_word(d, "condition", conds, &G->free_slip));
         int k = -1;
         for (int q = 0; q < dict_value_len(list); q++)
             if (!strcmp(dict_value_text(dict_value_at(list, q)), name))
@@ -154,8 +160,9 @@ static int read_walls(struct fluid *f)
                 || x[0] < lo[0] || x[0] > hi[0] || x[1] < lo[1]
                 || x[1] > hi[1] || s->group[i] >= 0)
                 continue;
-            if (!moves && fabs(G->U[0] * nn[0] + G->U[1] * nn[1])
-                              > 1e-12 * hypot(G->U[0], G->U[1]))
+            if (!moves && !through
+                && fabs(G->U[0] * nn[0] + G->U[1] * nn[1])
+                       > 1e-12 * hypot(G->U[0], G->U[1]))
                 continue;
             s->group[i] = e;
             count++;
@@ -171,6 +178,43 @@ static int read_walls(struct fluid *f)
         else
             log_info("walls %s: %d wall nodes of patch %s slide at (%g %g) "
                      "m/s", key, count, name, G->U[0], G->U[1]);
+    }
+    return SIM_OK;
+}
+
+/* fixedPressure { <name> { min (..); max (..); value p; } } of
+ * system/mlpgSolution: the fluid nodes in the box have p = value (an
+ * outlet; doc/theory.md M0-15). */
+static int read_fixed_pressure(struct fluid *f)
+{
+    struct mlpg_solver *s = &f->s;
+    const struct dict *fd;
+    TRY(dict_find_dict(f->solution, "fixedPressure", &fd));
+    if (!fd)
+        return SIM_OK;
+    s->nfixed_p = dict_size(fd);
+    s->fixed_p = sim_calloc((size_t)s->nfixed_p, sizeof *s->fixed_p);
+    if (!s->fixed_p)
+        return SIM_ERR_NOMEM;
+    for (int e = 0; e < s->nfixed_p; e++) {
+        struct mlpg_fixed_pressure *F = &s->fixed_p[e];
+        const char *key = dict_key_at(fd, e);
+        const struct dict *d;
+        TRY(dict_get_dict(fd, key, &d));
+        TRY(dict_get_vector(d, "min", 3, F->lo));
+        TRY(dict_get_vector(d, "max", 3, F->hi));
+        TRY(dict_get_scalar_or(d, "value", 0, &F->value));
+        int count = 0;
+        for (int i = 0; i < s->n; i++) {
+            const double *x = s->x + 3 * i;
+            count += s->type[i] == MLPG_FLUID && x[0] >= F->lo[0]
+                  && x[0] <= F->hi[0] && x[1] >= F->lo[1] && x[1] <= F->hi[1];
+        }
+        if (!count)
+            return dict_error(d, "min", SIM_ERR_DICT, "fixedPressure %s: no "
+                              "fluid node in the box", key);
+        log_info("fixedPressure %s: %d fluid nodes at p = %g Pa", key, count,
+                 F->value);
     }
     return SIM_OK;
 }
@@ -203,6 +247,7 @@ static int create(struct solver *sv)
     if (rc)
         return rc;
     TRY(read_walls(f));
+    TRY(read_fixed_pressure(f));
     TRY(dict_get_scalar_or(f->solution, "steadyTolerance", 0, &f->steady));
     TRY(dict_range(f->solution, "steadyTolerance", f->steady, 0, 1e30, 0));
     TRY(linsolve_create(ppe, &ls));

@@ -46,6 +46,9 @@ struct region {
     double velocity[3];     /* fluid, grains [m/s]                       */
     double omega[3];        /* grains [rad/s]                            */
     int hydrostatic;        /* fluid: initial hydrostatic pressure       */
+    int surface_nodes;      /* wall, 2-D circle: one layer of nodes ON   */
+                            /* the surface (mlpgFluid), surfaceNodes.c   */
+    double clearance;       /* surface nodes: fluid kept this far [dp]   */
     int has_surface;        /* fluid: surfaceHeight given                */
     double surface;         /* fluid: free-surface height [m]            */
     double diameter;        /* grains [m]                                */
@@ -103,6 +106,11 @@ struct dem_cloud {
     double *x, *radius, *u, *omega;
     int32_t *group;
 };
+
+/* surfaceNodes.c: replace the lattice sites of every wall region with
+ * surfaceNodes by nodes on its surface, and drop the fluid sites closer
+ * to it than its clearance. */
+int gen_surface_nodes(struct gen_case *c, struct mps_cloud *m);
 
 /* particleDict.c: read and check the dictionary; kernel_radius_hint is
  * r_e / dp from system/mpsSchemes or 0 when unknown; binary_default the

@@ -318,6 +318,7 @@ int gen_mps(struct gen_case *c, struct mps_cloud *m)
             r->top = fmax(r->top, m->x[3 * k + c->vertical] + 0.5 * c->dp);
     }
     TRY(jitter_fluid(c, m));
+    TRY(gen_surface_nodes(c, m));
     return check_counts(c, 0);
 }
 

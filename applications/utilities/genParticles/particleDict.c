@@ -214,6 +214,14 @@ static int read_region(const struct gen_case *c, struct region *r)
         TRY(read_grains(c, r));
         break;
     case REGION_WALL:
+        TRY(dict_get_bool_or(d, "surfaceNodes", 0, &r->surface_nodes));
+        TRY(dict_get_scalar_or(d, "surfaceClearance", 0.5, &r->clearance));
+        if (r->surface_nodes && !(c->dim == 2 && r->g.shape == GEOM_SPHERE))
+            return dict_error(d, "surfaceNodes", SIM_ERR_DICT, "region "
+                              "'%s': surfaceNodes is for a circle (2-D: "
+                              "shape sphere, or cylinder along z)", r->name);
+        if (r->surface_nodes)
+            TRY(dict_range(d, "surfaceClearance", r->clearance, 0, 2, 0));
         break;
     }
     return SIM_OK;
