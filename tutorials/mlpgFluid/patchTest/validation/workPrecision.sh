@@ -14,7 +14,7 @@ seeds=${1:-3}
 out=validation/workPrecision.dat
 {
     echo "# patch test, k = 0.3, $seeds seeds: scheme solver dl Er seconds (assembly + solve, mean per solve)"
-    echo "# $(date -u +%F), $(nproc) cores, load $(cut -d' ' -f1-3 /proc/loadavg), OMP_NUM_THREADS=1"
+    echo "# $(date -u +%F), $(nproc --all) cores, load $(cut -d' ' -f1-3 /proc/loadavg), OMP_NUM_THREADS=1"
 } > $out
 for pc in ilu0 jacobi amg; do
     rm -rf wp; mkdir wp; cp -r system wp/
