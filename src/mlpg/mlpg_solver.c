@@ -247,7 +247,9 @@ static int node_coefficients(struct mlpg_solver *s)
     return rc;
 }
 
-/* Dirichlet rows: the free surface (p = 0) and the reference node. */
+/* The nodes whose pressure is given: wall nodes above the water and the
+ * free surface (p = 0, doc M0-22, M0-23), fixedPressure boxes, the
+ * reference node; and the dry wall nodes left out of every row. */
 static int dirichlet_nodes(struct mlpg_solver *s)
 {
     memset(s->dirichlet, 0, (size_t)s->n);
@@ -276,7 +278,7 @@ static int dirichlet_nodes(struct mlpg_solver *s)
         }
         s->dirichlet[i] = s->exclude[i] = !wet;
     }
-    uint8_t *dry = s->dirichlet;
+    uint8_t *given = s->dirichlet;
     /* a wet wall node whose row cannot be made (the MLS support of a point
      * of its half disc holds only its own wall: it stands above the
      * water) is dry too */
@@ -289,7 +291,7 @@ static int dirichlet_nodes(struct mlpg_solver *s)
     if (!buf)
         return SIM_ERR_NOMEM;
     for (int i = 0; i < s->n; i++) {
-        if (s->type[i] != MLPG_WALL || dry[i])
+        if (s->type[i] != MLPG_WALL || given[i])
             continue;
         int32_t *cand = (int32_t *)(buf + 6 * maxlen);
         int m = mlpg_candidates(&s->c, i, cand);
@@ -298,7 +300,7 @@ static int dirichlet_nodes(struct mlpg_solver *s)
             || mlpg_domain_integral(&s->c, i, cand, m, s->ustar,
                                     buf + maxlen, &D) != SIM_OK) {
             sim_error_clear();
-            dry[i] = s->exclude[i] = 1;
+            given[i] = s->exclude[i] = 1;
         }
     }
     free(buf);
@@ -306,17 +308,17 @@ static int dirichlet_nodes(struct mlpg_solver *s)
         uint8_t *flag = s->fsflag, *counts = s->fsflag + s->n;
         for (int i = 0; i < s->n; i++) {
             flag[i] = s->type[i] == MLPG_FLUID; /* the rows to flag */
-            counts[i] = flag[i] || !dry[i];     /* and the neighbours */
+            counts[i] = flag[i] || !given[i];     /* and the neighbours */
         }
         pop_surface_quadrant(&s->nl, s->x, 2.5 * s->S.dl, 0.4 * s->S.dl,
                              flag, counts, flag);
         for (int i = 0; i < s->n; i++)
             if (s->type[i] == MLPG_FLUID)
-                dry[i] = flag[i];
+                given[i] = flag[i];
         /* a wet wall node at the waterline: nothing counted in the
          * 90-degree sector above it (its other sectors are the wall's) */
         for (int i = 0; gn > 0 && i < s->n; i++) {
-            if (s->type[i] != MLPG_WALL || dry[i])
+            if (s->type[i] != MLPG_WALL || given[i])
                 continue;
             int above = 0;
             for (int64_t k = nl->start[i]; k < nl->start[i + 1]; k++) {
@@ -330,7 +332,7 @@ static int dirichlet_nodes(struct mlpg_solver *s)
                     break;
                 }
             }
-            dry[i] = !above;
+            given[i] = !above;
         }
     }
     s->n_surface = 0;

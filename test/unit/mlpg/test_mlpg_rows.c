@@ -339,6 +339,13 @@ static void test_e3_05_side_integral(void **state)
     free_cloud(&cl);
 }
 
+static void neumann(void *ctx, int i, int nseg, const double nn[2][2], double g[2])
+{
+    (void)ctx, (void)i;
+    for (int s = 0; s < nseg; s++)
+        g[s] = 3 * nn[s][0] - 2 * nn[s][1];
+}
+
 static void test_assemble(void **state)
 {
     (void)state;
@@ -363,10 +370,7 @@ static void test_assemble(void **state)
     for (int w = 0; mlpg_wall_schemes[w]; w++) {
         struct mlpg_system S = { .wall = mlpg_wall_schemes[w],
                                  .neumann = NULL, .p_given = pg };
-        /* Neumann data through the callback: n.grad p = n.gr */
-        void neumann(void *ctx, int i, int nseg, const double nn[2][2],
-                     double g[2]);
-        S.neumann = neumann;
+        S.neumann = neumann; /* n.grad p = n.gr */
         struct csr_matrix A = { 0 };
         size_t cap = 0;
         assert_int_equal(mlpg_assemble(&cl.c, &S, &A, &cap, b), SIM_OK);
@@ -390,12 +394,6 @@ static void test_assemble(void **state)
     free_cloud(&cl);
 }
 
-void neumann(void *ctx, int i, int nseg, const double nn[2][2], double g[2])
-{
-    (void)ctx, (void)i;
-    for (int s = 0; s < nseg; s++)
-        g[s] = 3 * nn[s][0] - 2 * nn[s][1];
-}
 
 int main(void)
 {
