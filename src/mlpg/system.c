@@ -77,6 +77,7 @@ static int build(const struct mlpg_cloud *c, const struct mlpg_system *S,
 #endif
     /* per thread: candidates, coefficients, 5 maxlen of work */
     size_t per = (size_t)maxlen * (sizeof(int32_t) + 6 * sizeof(double));
+    per = (per + 63) / 64 * 64; /* every thread's doubles aligned */
     char *buf = sim_malloc((size_t)nthr * per);
     if (!buf)
         return SIM_ERR_NOMEM;
