@@ -3,7 +3,7 @@
  * (MLPG_R, Ma 2005) and its improved wall scheme (Pan 2022, PhD thesis ch. 3-4;
  * doc/theory.md part M): the rows of the pressure equation of a 2-D cloud
  * of nodes, the first-order MLS approximation they rest on, and the SFDI
- * gradient. The solver that steps a flow with them is src/mlpg/mlpg_step.c;
+ * gradient. The solver that steps a flow with them is mlpg_solver.h;
  * this part is geometry and linear algebra only, so that the patch test
  * (applications/utilities/mlpgPatchTest) and the unit tests of E3-01 ...
  * E3-05 call exactly what the solver calls.
@@ -23,6 +23,8 @@
  *
  *   improved / fluid:  (sector/2pi) p(x_i) - (1/8) sum_q p(x_q)
  *                    = -(rho/dt) D_i - sum_s (R/2pi) ((rho/dt) n_s.u*_i - g_s)
+ *   improvedConsistent: the same with g_s scaled by the quadrature's
+ *                    weight of a linear mode, 0.99845 (doc M0-20)
  *   original (wall):   (R/pi) n_out.grad p(x_i)  = (R/pi) g      (SFDI gradient)
  *
  * p(x) is the MLS approximant (3.17); D_i the domain integral (S-9)/2pi of
@@ -92,7 +94,7 @@ double mlpg_weight(double r, double rs);
 /* First-order MLS shape functions (3.17)-(3.21) at point p over the nodes
  * cand[0..m): phi[k] = Phi_cand[k](p). The basis is shifted to p and
  * scaled by dl. SIM_ERR_NUMERIC when fewer than three non-collinear nodes
- * lie within rs of p (the moment matrix is singular). work: 0 doubles. */
+ * lie within rs of p (the moment matrix is singular). */
 int mlpg_mls(const struct mlpg_cloud *c, const int32_t *cand, int m,
              const double p[2], double *phi);
 

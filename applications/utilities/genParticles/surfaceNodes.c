@@ -32,32 +32,16 @@ static void keep(struct mps_cloud *m, size_t k, size_t n)
 
 static int grow(struct mps_cloud *m, size_t n)
 {
-    double *x = sim_realloc(m->x, 3 * n * sizeof *x);
-    if (x)
-        m->x = x;
-    double *u = sim_realloc(m->u, 3 * n * sizeof *u);
-    if (u)
-        m->u = u;
-    double *nn = sim_realloc(m->normal, 3 * n * sizeof *nn);
-    if (nn)
-        m->normal = nn;
-    double *p = sim_realloc(m->p, n * sizeof *p);
-    if (p)
-        m->p = p;
-    int32_t *t = sim_realloc(m->type, n * sizeof *t);
-    if (t)
-        m->type = t;
-    int32_t *pa = sim_realloc(m->patch, n * sizeof *pa);
-    if (pa)
-        m->patch = pa;
-    int32_t *r = sim_realloc(m->region, n * sizeof *r);
-    if (r)
-        m->region = r;
-    int32_t *ph = m->phase ? sim_realloc(m->phase, n * sizeof *ph) : NULL;
-    if (ph)
-        m->phase = ph;
-    return x && u && nn && p && t && pa && r && (ph || !m->phase)
-               ? SIM_OK : SIM_ERR_NOMEM;
+    SIM_GROW(m->x, 3 * n);
+    SIM_GROW(m->u, 3 * n);
+    SIM_GROW(m->normal, 3 * n);
+    SIM_GROW(m->p, n);
+    SIM_GROW(m->type, n);
+    SIM_GROW(m->patch, n);
+    SIM_GROW(m->region, n);
+    if (m->phase)
+        SIM_GROW(m->phase, n);
+    return SIM_OK;
 }
 
 int gen_surface_nodes(struct gen_case *c, struct mps_cloud *m)
