@@ -519,8 +519,9 @@ int mlpg_step(struct mlpg_solver *s, double dt)
                      ? s->groups[grp].free_slip : S->free_slip;
         const int slip = wall && fs && !s->dirichlet[i]
                       && fabs(s->sector[i] - PI) < 1e-6; /* dry: U */
-        if (wall && !slip) {
+        if (wall) { /* no slip; free slip: below, from the new flow */
             memcpy(s->u + 3 * i, s->wallU + 3 * i, 3 * sizeof(double));
+            s->fsflag[i] = slip;
             continue;
         }
         int64_t e0 = s->coef_start[i], e1 = s->coef_start[i + 1];
@@ -533,13 +534,34 @@ int mlpg_step(struct mlpg_solver *s, double dt)
         for (int q = 0; q < 2; q++)
             s->u[3 * i + q] = s->ustar[3 * i + q] - dt / S->rho * g[q];
         s->u[3 * i + 2] = 0;
-        if (slip) { /* tangential part from the flow, normal part U.n */
-            const double *nn = s->nin + 3 * i, *U = s->wallU + 3 * i;
-            double un = U[0] * nn[0] + U[1] * nn[1];
-            double ut = -s->u[3 * i] * nn[1] + s->u[3 * i + 1] * nn[0];
-            s->u[3 * i] = un * nn[0] - ut * nn[1];
-            s->u[3 * i + 1] = un * nn[1] + ut * nn[0];
+    }
+    /* free slip (doc M0-16): the wall's normal velocity and the tangential
+     * velocity of the water next to the node, the Shepard (weighted)
+     * mean of the fluid nodes' new velocities within the MLS support (a
+     * one-sided momentum update of the wall node itself, or a linear fit
+     * to the wall, is unstable) */
+#pragma omp parallel for schedule(static)
+    for (int i = 0; i < n; i++) {
+        if (s->type[i] != MLPG_WALL || !s->fsflag[i])
+            continue;
+        double uf[2] = { 0, 0 }, sw = 0;
+        for (int64_t k = s->nl.start[i]; k < s->nl.start[i + 1]; k++) {
+            int j = s->nl.j[k];
+            double w = s->type[j] == MLPG_FLUID
+                     ? mlpg_weight(s->nl.r[k], s->c.rs) : 0;
+            uf[0] += w * s->u[3 * j];
+            uf[1] += w * s->u[3 * j + 1];
+            sw += w;
         }
+        if (!(sw > 0))
+            continue; /* no water next to it: the wall's velocity */
+        uf[0] /= sw;
+        uf[1] /= sw;
+        const double *nn = s->nin + 3 * i, *U = s->wallU + 3 * i;
+        double un = U[0] * nn[0] + U[1] * nn[1];
+        double ut = -uf[0] * nn[1] + uf[1] * nn[0];
+        s->u[3 * i] = un * nn[0] - ut * nn[1];
+        s->u[3 * i + 1] = un * nn[1] + ut * nn[0];
     }
     /* 5. Lagrangian nodes move; walls follow their motion (a sliding lid
      * stays: a conveyor) */

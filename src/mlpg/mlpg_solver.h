@@ -72,7 +72,8 @@ struct mlpg_solver {
     int32_t *type, *patch;
     /* work */
     double *ustar, *nin, *sector, *R, *pgiven, *wallU, *b;
-    uint8_t *dirichlet, *fsflag, *exclude;
+    uint8_t *dirichlet, *exclude;
+    uint8_t *fsflag;           /* work: free-surface flags, free-slip nodes */
     double *lap, (*sfdi)[2];   /* per list entry + self (fixed nodes)      */
     int64_t *coef_start;       /* n + 1: node i's entries                  */
     int32_t *cand;             /* per entry: the node (mlpg_candidates)    */
