@@ -16,8 +16,8 @@
 #     p = rho g (1 - y) with L2 error < 1e-3 (measured 6e-5), fluid speed
 #     < 1e-2 m/s (measured 9e-4)
 #   still water with a free surface (tutorial stillTank, improvedConsistent,
-#     10 s): pressure L2 < 1e-6 (measured 3.6e-10), displacement < 1e-5 m
-#     (5.3e-8), 79 surface nodes (the top row)
+#     10 s): pressure L2 < 1e-6 (measured 4.2e-10), displacement < 1e-5 m
+#     (6.0e-7), 79 surface nodes (the top row)
 #   cylinder (the tutorial: 24 surface nodes, inlet, outlet), Re 40, 1 s
 #     after the impulsive start: the recirculation behind it grows to
 #     L_wake/D = 0.93 (0.8-1.1; the run's number, a regression check)
