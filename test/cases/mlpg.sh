@@ -22,7 +22,9 @@
 #     after the impulsive start: the recirculation behind it grows to
 #     L_wake/D = 0.93 (0.8-1.1; the run's number, a regression check)
 #   bad input: unknown wallScheme (file:line, did you mean), dummy
-#     particles, pRefPoint outside, a 3-D case: non-zero exit, a message
+#     particles, pRefPoint outside, a wall group with both a velocity and a
+#     motion, an unknown patch, a velocity across walls without `through`,
+#     an outlet box without nodes, a 3-D case: non-zero exit, a message
 #     naming the file, no time directory written; genParticles refuses
 #     surfaceNodes on a box (file:line), writing nothing
 NAME=mlpg; . "$(dirname "$0")/lib/case.sh"
@@ -171,6 +173,23 @@ set_entry system/mlpgSolution pRefPoint "(0.5 0 0)"
 set_entry system/particleDict wallLayers 2
 (cd "$c" && "$ROOT/bin/genParticles" > log.genParticles 2>&1)
 bad dummy "0/fluid.vtu: node [0-9]+ is a dummy particle .*wallLayers 1"
+# wall groups and outlets: each mistake named at its file and line
+set_entry system/particleDict wallLayers 1
+(cd "$c" && "$ROOT/bin/genParticles" > log.genParticles 2>&1)
+wset() { "$ROOT/bin/dictTool" -case "$c" system/mlpgSolution -new -set "$1" >/dev/null; }
+cp "$c/system/mlpgSolution" "$c/solution.orig"
+wset "walls/lid/motion={ type translation; velocity (0 1 0); }"
+bad wallsBoth "system/mlpgSolution:[0-9]+:[0-9]+: walls lid: give either velocity"
+cp "$c/solution.orig" "$c/system/mlpgSolution"
+wset "walls/lid/patch=nowhere"
+bad wallsPatch "system/mlpgSolution:[0-9]+:[0-9]+: no patch 'nowhere' in constant/particlePatches"
+cp "$c/solution.orig" "$c/system/mlpgSolution"
+wset "walls/lid/velocity=(0 1 0)"
+bad wallsNormal "walls lid: no wall node of patch 'tank' in the box that the velocity is tangential to"
+cp "$c/solution.orig" "$c/system/mlpgSolution"
+wset "fixedPressure/outlet={ min (5 5 0); max (6 6 0); value 0; }"
+bad fixedPressureEmpty "system/mlpgSolution:[0-9]+:[0-9]+: fixedPressure outlet: no fluid node in the box"
+cp "$c/solution.orig" "$c/system/mlpgSolution"
 sed -i 's/^dimension .*/dimension 3;/; s/(1 1 0)/(1 1 1)/g' "$c/system/particleDict"
 set_entry system/particleDict wallLayers 1
 (cd "$c" && "$ROOT/bin/genParticles" > log.genParticles 2>&1)
