@@ -324,7 +324,7 @@ bad() {
         fail "bad_$name" "exit $rc, extra output '$extra': $(grep -A2 FATAL "$c/log.bad" | tr '\n' ' ')"
     fi
 }
-bad unknownType "unknown wall motion 'translaton'; valid: none translation table \(did you mean 'translation'\?\)" \
+bad unknownType "unknown wall motion 'translaton'; valid: none translation table oscillation \(did you mean 'translation'\?\)" \
     "motion { type translaton; velocity (0 0 0.1); }"
 bad noVelocity "missing.*'velocity'" "motion { type translation; }"
 bad noTable "cannot open the motion table 'nofile.csv'" 'motion { type table; file \"nofile.csv\"; }'
