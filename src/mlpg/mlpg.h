@@ -91,6 +91,11 @@ extern const struct mlpg_wall_ops *const mlpg_wall_schemes[];
  * s = r/rs, 0 for s >= 1. */
 double mlpg_weight(double r, double rs);
 
+/* Solve the SPD n x n system a x = b by Cholesky, a overwritten by its
+ * factor, b by x; 0 when a pivot falls below rtol times the largest
+ * diagonal entry (then a and b are garbage). */
+int mlpg_spd_solve(int n, double *a, double *b, double rtol);
+
 /* First-order MLS shape functions (3.17)-(3.21) at point p over the nodes
  * cand[0..m): phi[k] = Phi_cand[k](p). The basis is shifted to p and
  * scaled by dl. SIM_ERR_NUMERIC when fewer than three non-collinear nodes

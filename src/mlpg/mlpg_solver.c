@@ -295,10 +295,9 @@ static int dirichlet_nodes(struct mlpg_solver *s)
             continue;
         int32_t *cand = (int32_t *)(buf + 6 * maxlen);
         int m = mlpg_candidates(&s->c, i, cand);
-        double D;
         if (s->S.wall->row(&s->c, i, cand, m, buf, buf + maxlen) != SIM_OK
-            || mlpg_domain_integral(&s->c, i, cand, m, s->ustar,
-                                    buf + maxlen, &D) != SIM_OK) {
+            || mlpg_domain_weights(&s->c, i, cand, m, buf + maxlen)
+                   != SIM_OK) {
             sim_error_clear();
             given[i] = s->exclude[i] = 1;
         }
@@ -343,9 +342,8 @@ static int dirichlet_nodes(struct mlpg_solver *s)
     for (int f = 0; f < s->nfixed_p; f++) {
         const struct mlpg_fixed_pressure *F = &s->fixed_p[f];
         for (int i = 0; i < s->n; i++) {
-            const double *x = s->x + 3 * i;
-            if (s->type[i] == MLPG_FLUID && x[0] >= F->lo[0]
-                && x[0] <= F->hi[0] && x[1] >= F->lo[1] && x[1] <= F->hi[1]) {
+            if (s->type[i] == MLPG_FLUID
+                && mlpg_in_box(s->x + 3 * i, F->lo, F->hi)) {
                 s->dirichlet[i] = 1;
                 s->pgiven[i] = F->value;
             }
@@ -479,8 +477,10 @@ int mlpg_step(struct mlpg_solver *s, double dt)
             for (int q = 0; q < 2; q++) {
                 double du = s->u[3 * j + q] - s->u[3 * i + q];
                 lap[q] += s->lap[e] * du;
-                gx[q] += s->sfdi[e][0] * du;
-                gy[q] += s->sfdi[e][1] * du;
+                if (fixed) { /* grad u: the advection of fixed nodes */
+                    gx[q] += s->sfdi[e][0] * du;
+                    gy[q] += s->sfdi[e][1] * du;
+                }
             }
         }
         for (int q = 0; q < 2; q++) {

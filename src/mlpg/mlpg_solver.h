@@ -45,6 +45,13 @@ struct mlpg_fixed_pressure {
     double lo[3], hi[3], value;
 };
 
+/* Is the 2-D point x in the box [lo, hi] (edges included)? */
+static inline int mlpg_in_box(const double *x, const double *lo,
+                              const double *hi)
+{
+    return x[0] >= lo[0] && x[0] <= hi[0] && x[1] >= lo[1] && x[1] <= hi[1];
+}
+
 struct mlpg_settings {
     double rho, nu, g[3];
     double dl;

@@ -30,31 +30,36 @@ double mlpg_weight(double r, double rs)
     return 1 - 6 * s2 + 8 * s2 * s - 3 * s2 * s2;
 }
 
-/* Solve the SPD 3x3 system a c = e_0 by Cholesky; 0 when a pivot falls
- * below 1e-10 of the largest diagonal (collinear or too few nodes). */
-static int spd3_first_column(const double a[9], double c[3])
+int mlpg_spd_solve(int n, double *a, double *b, double rtol)
 {
-    double dmax = fmax(a[0], fmax(a[4], a[8]));
-    double l00 = a[0];
-    if (!(l00 > 1e-10 * dmax))
-        return 0;
-    l00 = sqrt(l00);
-    double l10 = a[3] / l00, l20 = a[6] / l00;
-    double l11 = a[4] - l10 * l10;
-    if (!(l11 > 1e-10 * dmax))
-        return 0;
-    l11 = sqrt(l11);
-    double l21 = (a[7] - l20 * l10) / l11;
-    double l22 = a[8] - l20 * l20 - l21 * l21;
-    if (!(l22 > 1e-10 * dmax))
-        return 0;
-    l22 = sqrt(l22);
-    /* L y = e_0, then L^T c = y */
-    double y0 = 1 / l00, y1 = -l10 * y0 / l11;
-    double y2 = (-l20 * y0 - l21 * y1) / l22;
-    c[2] = y2 / l22;
-    c[1] = (y1 - l21 * c[2]) / l11;
-    c[0] = (y0 - l10 * c[1] - l20 * c[2]) / l00;
+    double dmax = 0;
+    for (int k = 0; k < n; k++)
+        dmax = fmax(dmax, a[k * n + k]);
+    for (int k = 0; k < n; k++) {
+        double d = a[k * n + k];
+        for (int q = 0; q < k; q++)
+            d -= a[k * n + q] * a[k * n + q];
+        if (!(d > rtol * dmax))
+            return 0;
+        d = sqrt(d);
+        a[k * n + k] = d;
+        for (int r = k + 1; r < n; r++) {
+            double t = a[r * n + k];
+            for (int q = 0; q < k; q++)
+                t -= a[r * n + q] * a[k * n + q];
+            a[r * n + k] = t / d;
+        }
+    }
+    for (int k = 0; k < n; k++) {       /* L y = b */
+        for (int q = 0; q < k; q++)
+            b[k] -= a[k * n + q] * b[q];
+        b[k] /= a[k * n + k];
+    }
+    for (int k = n - 1; k >= 0; k--) {  /* L^T x = y */
+        for (int q = k + 1; q < n; q++)
+            b[k] -= a[q * n + k] * b[q];
+        b[k] /= a[k * n + k];
+    }
     return 1;
 }
 
@@ -74,8 +79,8 @@ int mlpg_mls(const struct mlpg_cloud *c, const int32_t *cand, int m,
             for (int s = 0; s < 3; s++)
                 a[3 * r + s] += w * b[r] * b[s];
     }
-    double cc[3];
-    if (!spd3_first_column(a, cc))
+    double cc[3] = { 1, 0, 0 }; /* A c = e_0 */
+    if (!mlpg_spd_solve(3, a, cc, 1e-10))
         return sim_error(SIM_ERR_NUMERIC,
                          "MLS at (%g, %g): fewer than three non-collinear "
                          "nodes within the support radius %g m",

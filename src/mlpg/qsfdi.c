@@ -17,41 +17,6 @@
 #include "core/error.h"
 #include "mlpg/mlpg.h"
 
-/* Solve the SPD n x n system a s = b in place (Cholesky); 0 when a pivot
- * falls below 1e-12 of the largest diagonal. */
-static int spd_solve(int n, double *a, double *b)
-{
-    double dmax = 0;
-    for (int k = 0; k < n; k++)
-        dmax = fmax(dmax, a[k * n + k]);
-    for (int k = 0; k < n; k++) {
-        double d = a[k * n + k];
-        for (int q = 0; q < k; q++)
-            d -= a[k * n + q] * a[k * n + q];
-        if (!(d > 1e-12 * dmax))
-            return 0;
-        d = sqrt(d);
-        a[k * n + k] = d;
-        for (int r = k + 1; r < n; r++) {
-            double s = a[r * n + k];
-            for (int q = 0; q < k; q++)
-                s -= a[r * n + q] * a[k * n + q];
-            a[r * n + k] = s / d;
-        }
-    }
-    for (int k = 0; k < n; k++) {
-        for (int q = 0; q < k; q++)
-            b[k] -= a[k * n + q] * b[q];
-        b[k] /= a[k * n + k];
-    }
-    for (int k = n - 1; k >= 0; k--) {
-        for (int q = k + 1; q < n; q++)
-            b[k] -= a[q * n + k] * b[q];
-        b[k] /= a[k * n + k];
-    }
-    return 1;
-}
-
 int mlpg_laplacian_coeffs(const struct mlpg_cloud *c, int i,
                           const int32_t *cand, int m, double radius,
                           double *l)
@@ -69,7 +34,7 @@ int mlpg_laplacian_coeffs(const struct mlpg_cloud *c, int i,
             for (int q = 0; q < 5; q++)
                 M[5 * r + q] += w * a[r] * a[q];
     }
-    if (!spd_solve(5, M, s))
+    if (!mlpg_spd_solve(5, M, s, 1e-12))
         return sim_error(SIM_ERR_NUMERIC,
                          "viscous Laplacian at node %d (%g, %g): fewer than "
                          "five independent neighbours within %g m", i, xi[0],

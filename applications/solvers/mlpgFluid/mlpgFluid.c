@@ -155,10 +155,9 @@ static int read_walls(struct fluid *f)
                               "constant/particlePatches", name);
         int count = 0;
         for (int i = 0; i < s->n; i++) {
-            const double *x = s->x + 3 * i, *nn = s->normal + 3 * i;
+            const double *nn = s->normal + 3 * i;
             if (s->patch[i] != k || s->type[i] != MLPG_WALL
-                || x[0] < lo[0] || x[0] > hi[0] || x[1] < lo[1]
-                || x[1] > hi[1] || s->group[i] >= 0)
+                || !mlpg_in_box(s->x + 3 * i, lo, hi) || s->group[i] >= 0)
                 continue;
             if (!moves && !through
                 && fabs(G->U[0] * nn[0] + G->U[1] * nn[1])
@@ -205,11 +204,9 @@ static int read_fixed_pressure(struct fluid *f)
         TRY(dict_get_vector(d, "max", 3, F->hi));
         TRY(dict_get_scalar_or(d, "value", 0, &F->value));
         int count = 0;
-        for (int i = 0; i < s->n; i++) {
-            const double *x = s->x + 3 * i;
-            count += s->type[i] == MLPG_FLUID && x[0] >= F->lo[0]
-                  && x[0] <= F->hi[0] && x[1] >= F->lo[1] && x[1] <= F->hi[1];
-        }
+        for (int i = 0; i < s->n; i++)
+            count += s->type[i] == MLPG_FLUID
+                  && mlpg_in_box(s->x + 3 * i, F->lo, F->hi);
         if (!count)
             return dict_error(d, "min", SIM_ERR_DICT, "fixedPressure %s: no "
                               "fluid node in the box", key);

@@ -58,10 +58,9 @@ static double consistent_rhs(const struct mlpg_cloud *c, int i,
                              const double n[2][2], const double g[2])
 {
     double t0, angle, ns[2][2];
-    int np;
-    mlpg_sector(c, i, &t0, &angle, &np, ns);
-    np = (int)ceil(angle / (TWO_PI / 4) - 1e-9);
-    double d = angle / (np < 1 ? 1 : np);
+    int ns_;
+    mlpg_sector(c, i, &t0, &angle, &ns_, ns);
+    double d = angle / (mlpg_domain_points(c, i) - 1); /* a piece's angle */
     double kappa = d * cos(d / (2 * sqrt(3.0))) / (2 * sin(d / 2));
     return side_terms(c, i, rho_dt, D, ustar_i, nseg, n, g, kappa);
 }
