@@ -9,6 +9,13 @@
  * positive pressure pushes on the face; dp^(d-1) is the face area a wall
  * particle stands for (a length in 2-D, where F is per unit width, N/m).
  * Dummy particles carry copies of wall pressures and are not counted.
+ * A solver that knows better publishes per wall particle its area A_i
+ * (field wallArea) and the viscous stress t_i the fluid exerts on it
+ * (field viscousTraction; mlpgFluid, doc/theory.md M0-24); then
+ *
+ *     F_k = sum over wall particles i of patch k of  A_i (p_i n_i + t_i)
+ *
+ * and the columns Fvx Fvy Fvz give the viscous part alone.
  *
  * On a still lattice of N fluid layers against a vertical wall (wall
  * particles level with the fluid ones, p = rho g (h - z) with the surface
@@ -24,7 +31,8 @@
  * Keys:
  *   patches (obstacle ...);   // wall patch names (constant/particlePatches)
  *   phase   all;              // all (default) | water | soil
- * Columns: time, then Fx Fy Fz of each patch [N, or N/m in 2-D].
+ * Columns: time, then Fx Fy Fz of each patch [N, or N/m in 2-D] (with
+ * viscousTraction: Fx Fy Fz Fvx Fvy Fvz).
  */
 #include <math.h>
 #include <stdint.h>
@@ -42,8 +50,9 @@ struct forces {
     int *which;     /* n scene patch indices      */
     int npatches;   /* of the scene at create     */
     int *column;    /* npatches: index in which[] or -1 */
-    double *F;      /* 3n work and result         */
+    double *F;      /* 6n work and result: F, Fv  */
     int phase;      /* enum mps_fo_phase          */
+    int viscous;    /* the cloud has viscousTraction */
 };
 
 static void destroy(void *data)
@@ -89,7 +98,7 @@ static int read_patches(const struct dict *d, const struct fo_scene *s,
     fo->npatches = s->npatches;
     fo->which = sim_calloc((size_t)fo->n, sizeof *fo->which);
     fo->column = sim_calloc((size_t)s->npatches + 1, sizeof *fo->column);
-    fo->F = sim_calloc(3 * (size_t)fo->n, sizeof *fo->F);
+    fo->F = sim_calloc(6 * (size_t)fo->n, sizeof *fo->F);
     if (!fo->which || !fo->column || !fo->F)
         return SIM_ERR_NOMEM;
     for (int k = 0; k < s->npatches; k++)
@@ -119,6 +128,7 @@ static int create(const struct dict *d, const struct fo_scene *s, void **data)
     int rc = mps_fo_fields_get(d, s, FIELDS, &f);
     if (rc == SIM_OK)
         rc = read_patches(d, s, fo);
+    fo->viscous = f.traction != NULL;
     if (rc == SIM_OK)
         rc = mps_fo_read_phase(d, s, &fo->phase);
     if (rc == SIM_OK && fo->phase != MPS_FO_ALL_PHASES && f.phase
@@ -137,13 +147,17 @@ static int create(const struct dict *d, const struct fo_scene *s, void **data)
 static int header(void *data, const struct fo_scene *s, FILE *f)
 {
     struct forces *fo = data;
-    fprintf(f, "# forces: pressure force sum p dp^(d-1) n on wall patches "
-            "[%s]%s\n# time", s->dim == 2 ? "N/m" : "N",
+    fprintf(f, "# forces: %s on wall patches [%s]%s\n# time",
+            fo->viscous ? "force sum A (p n + t), t the viscous traction "
+                          "(Fv: its part)" : "pressure force sum p dp^(d-1) n",
+            s->dim == 2 ? "N/m" : "N",
             fo->phase == MPS_FO_SOIL ? ", the soil's share"
             : fo->phase == MPS_FO_WATER ? ", the water's share" : "");
     for (int j = 0; j < fo->n; j++) {
         const char *p = s->patch_names[fo->which[j]];
         fprintf(f, " %s_Fx %s_Fy %s_Fz", p, p, p);
+        if (fo->viscous)
+            fprintf(f, " %s_Fvx %s_Fvy %s_Fvz", p, p, p);
     }
     fprintf(f, "\n");
     return SIM_OK;
@@ -153,7 +167,7 @@ static void sum_forces(const struct mps_fo_fields *f, struct forces *fo,
                        double area)
 {
     double *F = fo->F;
-    int m = 3 * fo->n, np = fo->npatches;
+    int m = 6 * fo->n, np = fo->npatches;
     long n = (long)f->n;
     memset(F, 0, (size_t)m * sizeof *F);
 #pragma omp parallel for reduction(+ : F[:m]) schedule(static)
@@ -161,12 +175,16 @@ static void sum_forces(const struct mps_fo_fields *f, struct forces *fo,
         int k = f->patch[i];
         if (f->type[i] != 1 || k < 0 || k >= np || fo->column[k] < 0)
             continue;
-        double pa = f->p[i] * area;
+        double a = f->wall_area ? f->wall_area[i] : area;
         if (fo->phase != MPS_FO_ALL_PHASES && f->soil_frac)
-            pa *= fo->phase == MPS_FO_SOIL ? f->soil_frac[i]
-                                           : 1.0 - f->soil_frac[i];
-        for (int c = 0; c < 3; c++)
-            F[3 * fo->column[k] + c] += pa * f->normal[3 * i + c];
+            a *= fo->phase == MPS_FO_SOIL ? f->soil_frac[i]
+                                          : 1.0 - f->soil_frac[i];
+        double *Fk = F + 6 * fo->column[k];
+        for (int c = 0; c < 3; c++) {
+            double tv = f->traction ? a * f->traction[3 * i + c] : 0;
+            Fk[c] += a * f->p[i] * f->normal[3 * i + c] + tv;
+            Fk[3 + c] += tv;
+        }
     }
 }
 
@@ -182,8 +200,9 @@ static int execute(void *data, const struct fo_scene *s, FILE *out)
     sum_forces(&f, fo, s->dim == 2 ? s->spacing
                                    : s->spacing * s->spacing);
     fprintf(out, "%.15g", s->time);
-    for (int c = 0; c < 3 * fo->n; c++)
-        fprintf(out, " %.15g", fo->F[c]);
+    for (int j = 0; j < fo->n; j++)
+        for (int c = 0; c < (fo->viscous ? 6 : 3); c++)
+            fprintf(out, " %.15g", fo->F[6 * j + c]);
     fprintf(out, "\n");
     return SIM_OK;
 }

@@ -58,6 +58,14 @@ static int located(const struct dict *who, int code)
                      dict_name(who), msg);
 }
 
+/* The data of an optional field of that type, or NULL. */
+static void *optional(const struct store *st, const char *name,
+                      enum vtu_type type, int ncomp)
+{
+    const struct store_field *sf = store_find(st, name);
+    return sf && sf->type == type && sf->ncomp == ncomp ? *sf->ref : NULL;
+}
+
 int mps_fo_fields_get(const struct dict *who, const struct fo_scene *s,
                       unsigned mask, struct mps_fo_fields *f)
 {
@@ -85,12 +93,10 @@ int mps_fo_fields_get(const struct dict *who, const struct fo_scene *s,
             return located(who, SIM_ERR_INPUT);
         memcpy((char *)f + specs[k].offset, &v, sizeof(void *));
     }
-    const struct store_field *ph = store_find(s->store, "phase");
-    if (ph && ph->type == VTU_INT32 && ph->ncomp == 1)
-        f->phase = *ph->ref;
-    const struct store_field *sf = store_find(s->store, "soilFraction");
-    if (sf && sf->type == VTU_FLOAT64 && sf->ncomp == 1)
-        f->soil_frac = *sf->ref;
+    f->phase = optional(s->store, "phase", VTU_INT32, 1);
+    f->soil_frac = optional(s->store, "soilFraction", VTU_FLOAT64, 1);
+    f->wall_area = optional(s->store, "wallArea", VTU_FLOAT64, 1);
+    f->traction = optional(s->store, "viscousTraction", VTU_FLOAT64, 3);
     return SIM_OK;
 }
 

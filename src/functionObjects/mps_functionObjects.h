@@ -41,6 +41,12 @@
  *   soilFraction   Float64 x1  optional (cases with soil): of a wall
  *                              particle, the soil's share of its fluid
  *                              neighbours; forces splits the load by it
+ *   wallArea       Float64 x1  optional: the wall area (length in 2-D)
+ *                              a wall particle stands for [m^(d-1)];
+ *                              without it forces takes dp^(d-1)
+ *   viscousTraction Float64 x3 optional: of a wall particle, the viscous
+ *                              stress the fluid exerts on the wall [Pa];
+ *                              forces adds it (mlpgFluid, doc M0-24)
  *
  * scene->spacing = dp [m]; scene->dim = 2 (x-y plane, vertical y) or 3
  * (vertical z); scene->patch_names/npatches name the wall patches;
@@ -87,6 +93,8 @@ struct mps_fo_fields {
     const int64_t *id;
     const int32_t *phase;  /* the optional field "phase", or NULL */
     const double *soil_frac; /* the optional field "soilFraction", or NULL */
+    const double *wall_area; /* the optional field "wallArea", or NULL */
+    const double *traction;  /* the optional "viscousTraction", or NULL */
 };
 
 /* Fill f with the fields named in `mask` (others NULL) after checking type

@@ -112,12 +112,13 @@ int mlpg_mls(const struct mlpg_cloud *c, const int32_t *cand, int m,
 int mlpg_sfdi(const struct mlpg_cloud *c, int i, const int32_t *cand, int m,
               double (*a)[2]);
 
-/* The viscous Laplacian (qsfdi.c): lap f_i = sum_k l[k] (f_cand[k] - f_i),
- * by the second-order weighted least-squares fit on `radius`.
+/* Derivatives by the second-order weighted least-squares fit on `radius`
+ * (qsfdi.c): op f_i = sum_k l[k] (f_cand[k] - f_i) for op the Laplacian
+ * (the viscous term) or d/dx, d/dy (a wall's shear stress).
  * SIM_ERR_NUMERIC when fewer than five independent nodes lie within it. */
-int mlpg_laplacian_coeffs(const struct mlpg_cloud *c, int i,
-                          const int32_t *cand, int m, double radius,
-                          double *l);
+enum mlpg_fit2 { MLPG_FIT2_LAPLACIAN, MLPG_FIT2_DX, MLPG_FIT2_DY };
+int mlpg_fit2_coeffs(const struct mlpg_cloud *c, int i, const int32_t *cand,
+                     int m, double radius, enum mlpg_fit2 op, double *l);
 
 /* ---- sub-domains and rows (rows.c) --------------------------------------- */
 

@@ -124,11 +124,18 @@ int mlpg_fields_alloc(struct mlpg_solver *s, int n)
                   &s->type));
     TRY(store_add(st, "patch", "wall region, -1 fluid", VTU_INT32, 1,
                   STORE_WRITE, &s->patch));
+    TRY(store_add(st, "id", "persistent", VTU_INT64, 1, STORE_WRITE,
+                  &s->id));
     TRY(store_add(st, "normal", "wall: unit, into the solid", VTU_FLOAT64,
                   3, STORE_WRITE, &s->normal));
     TRY(store_add(st, "pressureFixed", "1: p given (free surface, wall "
                   "above the water, reference node)", VTU_UINT8, 1,
                   STORE_WRITE, &s->dirichlet));
+    TRY(store_add(st, "wallArea", "wall: the length it stands for [m]",
+                  VTU_FLOAT64, 1, STORE_WRITE, &s->wall_area));
+    TRY(store_add(st, "viscousTraction", "wall: viscous stress of the "
+                  "fluid on it [Pa]", VTU_FLOAT64, 3, STORE_WRITE,
+                  &s->traction));
     TRY(store_resize(st, (size_t)n));
     s->n = n;
     return SIM_OK;
@@ -232,7 +239,8 @@ static int node_coefficients(struct mlpg_solver *s)
                                      s->dw + s->dw_start[i]);
         if (rc != SIM_OK)
             break;
-        rc = mlpg_laplacian_coeffs(&s->c, i, cand, m, s->nl.rc, s->lap + e);
+        rc = mlpg_fit2_coeffs(&s->c, i, cand, m, s->nl.rc,
+                              MLPG_FIT2_LAPLACIAN, s->lap + e);
         if (rc == SIM_OK)
             rc = mlpg_sfdi(&s->c, i, cand, m, s->sfdi + e);
         if (rc != SIM_OK && s->type[i] == MLPG_WALL) {

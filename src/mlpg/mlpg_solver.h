@@ -77,6 +77,8 @@ struct mlpg_solver {
     int n;
     double *x, *u, *p, *normal; /* normal: genParticles', into the solid */
     int32_t *type, *patch;
+    int64_t *id;               /* persistent: nodes are never reordered    */
+    double *wall_area, *traction; /* mlpg_wall_stress                    */
     /* work */
     double *ustar, *nin, *sector, *R, *pgiven, *wallU, *b;
     uint8_t *dirichlet, *exclude;
@@ -130,8 +132,14 @@ int mlpg_solver_init(struct mlpg_solver *s, const struct mlpg_settings *S,
 /* One projection step of dt. */
 int mlpg_step(struct mlpg_solver *s, double dt);
 
+/* wallArea and viscousTraction of the wall nodes from the last step's
+ * velocities and rows (wall_stress.c, doc/theory.md M0-24); zeros before
+ * the first step and on dry wall nodes. */
+void mlpg_wall_stress(struct mlpg_solver *s);
+
 /* Register the cloud's fields in s->st (positions, velocity, pressure,
- * type, patch, normal) and size it for n nodes. */
+ * type, patch, id, normal, and the output fields pressureFixed, wallArea,
+ * viscousTraction) and size it for n nodes. */
 int mlpg_fields_alloc(struct mlpg_solver *s, int n);
 
 void mlpg_solver_free(struct mlpg_solver *s);

@@ -22,13 +22,18 @@
 #include "core/gravity.h"
 #include "core/log.h"
 #include "functionObjects/functionObject.h"
+#include "functionObjects/mps_functionObjects.h"
 #include "io/vtu.h"
 #include "mlpg/mlpg_solver.h"
 #include "solver/solver.h"
 
+enum { MLPG_MAX_PATCHES = 64 };
+
 struct fluid {
     struct solver sv;
     struct dict *transport, *gravity, *schemes, *solution, *patches;
+    const char *patch_names[MLPG_MAX_PATCHES];
+    int npatches;
     struct mlpg_solver s;
     double dp, change;               /* max |u^{n+1} - u^n| / dt        */
     double steady;                   /* stop when change < steady       */
@@ -50,6 +55,14 @@ static int read_patches(struct fluid *f)
         return dict_error(f->patches, "dp", SIM_ERR_DICT, "dp must be > 0");
     dict_mark_used(f->patches, "types");
     dict_mark_used(f->patches, "wallLayers");
+    const struct dict_value *list;
+    TRY(dict_get_list(f->patches, "patches", &list));
+    f->npatches = dict_value_len(list);
+    if (f->npatches > MLPG_MAX_PATCHES)
+        return dict_error(f->patches, "patches", SIM_ERR_DICT, "at most %d "
+                          "wall patches", MLPG_MAX_PATCHES);
+    for (int k = 0; k < f->npatches; k++)
+        TRY(dict_value_get_word(dict_value_at(list, k), &f->patch_names[k]));
     return SIM_OK;
 }
 
@@ -57,7 +70,9 @@ static int copy_cloud(struct fluid *f, const struct vtu_cloud *c,
                       const char *path)
 {
     struct mlpg_solver *s = &f->s;
-    const struct vtu_field *ty, *pa, *ve, *pr, *no;
+    const struct vtu_field *ty, *pa, *ve, *pr, *no, *id = vtu_find(c, "id");
+    if (id && (id->type != VTU_INT64 || id->ncomp != 1))
+        return sim_error(SIM_ERR_INPUT, "%s: field 'id' must be Int64", path);
     TRY(vtu_require(c, path, "type", VTU_INT32, 1, &ty));
     TRY(vtu_require(c, path, "patch", VTU_INT32, 1, &pa));
     TRY(vtu_require(c, path, "velocity", VTU_FLOAT64, 3, &ve));
@@ -73,6 +88,8 @@ static int copy_cloud(struct fluid *f, const struct vtu_cloud *c,
     memcpy(s->normal, no->data, sizeof *s->normal * 3 * n);
     memcpy(s->type, ty->data, sizeof *s->type * n);
     memcpy(s->patch, pa->data, sizeof *s->patch * n);
+    for (int i = 0; i < n; i++)
+        s->id[i] = id ? ((const int64_t *)id->data)[i] : i;
     for (int i = 0; i < n; i++) {
         if (s->type[i] == 2)
             return sim_error(SIM_ERR_INPUT, "%s: node %d is a dummy particle "
@@ -104,11 +121,9 @@ static int read_walls(struct fluid *f)
 {
     struct mlpg_solver *s = &f->s;
     const struct dict *wd;
-    const struct dict_value *list;
     TRY(dict_find_dict(f->solution, "walls", &wd));
     if (!wd)
         return SIM_OK;
-    TRY(dict_get_list(f->patches, "patches", &list));
     int ng = dict_size(wd);
     s->groups = sim_calloc((size_t)ng, sizeof *s->groups);
     s->group = sim_malloc((size_t)s->n * sizeof *s->group);
@@ -147,8 +162,8 @@ static int read_walls(struct fluid *f)
         if (dict_has(d, "condition"))
             TRY(dict_get_word(d, "condition", conds, &G->free_slip));
         int k = -1;
-        for (int q = 0; q < dict_value_len(list); q++)
-            if (!strcmp(dict_value_text(dict_value_at(list, q)), name))
+        for (int q = 0; q < f->npatches; q++)
+            if (!strcmp(f->patch_names[q], name))
                 k = q;
         if (k < 0)
             return dict_error(d, "patch", SIM_ERR_DICT, "no patch '%s' in "
@@ -261,11 +276,13 @@ static int create(struct solver *sv)
 static int refresh_scene(struct solver *sv)
 {
     struct fluid *f = (struct fluid *)sv;
+    mlpg_wall_stress(&f->s);
     store_cloud(&f->s.st, sv->rt.value, f->fields, &f->cloud);
     sv->scene = (struct fo_scene){
         .time = sv->rt.value, .dt = sv->rt.dt, .step = sv->rt.step,
         .dim = 2, .cloud_name = "fluid", .store = &f->s.st,
-        .spacing = f->dp, .solver = &f->s };
+        .spacing = f->dp, .patch_names = f->patch_names,
+        .npatches = f->npatches, .solver = &f->s };
     return SIM_OK;
 }
 
@@ -347,7 +364,7 @@ static void list_models(void)
 }
 
 static const struct fo_ops *const *const fo_tables[] = {
-    fo_generic_table, NULL };
+    fo_generic_table, mps_fo_table, NULL };
 
 static const struct solver_ops fluid_ops = {
     .name = "mlpgFluid",

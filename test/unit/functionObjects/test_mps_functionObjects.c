@@ -49,7 +49,7 @@ struct cloud {
     int32_t *type, *patch;
     uint8_t *fs;
     int64_t *id;
-    struct vtu_field f[8];
+    struct vtu_field f[10];
     struct vtu_cloud c;
     struct store st;   /* what the function objects look fields up in */
 };
@@ -562,6 +562,56 @@ static void test_forces(void **state)
     cloud_free(&c);
 }
 
+/* A solver's own wall areas and viscous tractions (mlpgFluid): forces
+ * sums A_i (p_i n_i + t_i) and writes the viscous part beside. */
+static void test_forces_traction(void **state)
+{
+    (void)state;
+    struct cloud c;
+    struct fo_scene s;
+    build_tank(&c);
+    double *area = calloc(c.n, sizeof *area), *t = calloc(3 * c.n, sizeof *t);
+    assert_non_null(area && t);
+    for (size_t i = 0; i < c.n; i++) {
+        area[i] = (1 + (double)(i % 3) / 4) * DP;
+        t[3 * i] = 0.5 + (double)(i % 5);
+        t[3 * i + 1] = -0.25 * (double)(i % 7);
+    }
+    set_field(&c.f[8], "wallArea", VTU_FLOAT64, 1, area);
+    set_field(&c.f[9], "viscousTraction", VTU_FLOAT64, 3, t);
+    c.c.nfields = 10;
+    views(&c);
+    make_scene(&s, &c);
+    run("functions {\n  F { type forces; patches (right left); }\n}\n", &s,
+        &c, 2, NULL);
+    char cols[256];
+    double v[16];
+    int rows;
+    assert_int_equal(read_output("F", "forces", cols, sizeof cols, v, 16,
+                                 &rows), 13);
+    assert_string_equal(cols, "# time right_Fx right_Fy right_Fz right_Fvx "
+                        "right_Fvy right_Fvz left_Fx left_Fy left_Fz "
+                        "left_Fvx left_Fvy left_Fvz\n");
+    const int patch[2] = { 2, 1 };
+    for (int q = 0; q < 2; q++) {
+        double F[3] = { 0 }, Fv[3] = { 0 };
+        for (size_t i = 0; i < c.n; i++)
+            if (c.type[i] == 1 && c.patch[i] == patch[q])
+                for (int k = 0; k < 3; k++) {
+                    F[k] += area[i] * (c.p[i] * c.nrm[3 * i + k] + t[3 * i + k]);
+                    Fv[k] += area[i] * t[3 * i + k];
+                }
+        for (int k = 0; k < 3; k++) {
+            assert_close(v[1 + 6 * q + k], F[k], 1e-12 * (fabs(F[k]) + 1));
+            assert_close(v[4 + 6 * q + k], Fv[k], 1e-12 * (fabs(Fv[k]) + 1));
+        }
+    }
+    assert_true(fabs(v[10]) > 0.1 && fabs(v[7] - v[10]) > 1); /* both parts */
+    free(area);
+    free(t);
+    cloud_free(&c);
+}
+
 /* ---- volume ------------------------------------------------------------ */
 
 static struct fo_value escaped = {"escaped", 1, {1}};
@@ -816,6 +866,7 @@ int main(void)
         cmocka_unit_test(test_wave_gauges),
         cmocka_unit_test(test_front),
         cmocka_unit_test(test_forces),
+        cmocka_unit_test(test_forces_traction),
         cmocka_unit_test(test_volume),
         cmocka_unit_test(test_3d),
         cmocka_unit_test(test_errors),

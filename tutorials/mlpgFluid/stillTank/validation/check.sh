@@ -13,7 +13,9 @@ l2=$(dump "$t" | awk '/^# x/ { for (k = 2; k <= NF; k++) c[$k] = k - 1; next }
     $c["type"] == 0 { pa = 1000 * 9.81 * (1 - $2); if (pa < 0) pa = 0; e = $c["pressure"] - pa
     s += e * e; sa += pa * pa; v = sqrt($c["velocity_0"]^2 + $c["velocity_1"]^2); if (v > vm) vm = v }
     END { printf "%.3g %.3g", sqrt(s / sa), vm }')
-disp=$(paste <(dump 0 | grep -v '^#') <(dump "$t" | grep -v '^#') | awk '{ h = NF / 2
-    d = sqrt(($1 - $(1 + h))^2 + ($2 - $(2 + h))^2); if (d > m) m = d } END { printf "%.3g", m }')
+# positions only: the start cloud (genParticles) has fewer fields
+xy() { dump "$1" | awk '!/^#/ { print $1, $2 }'; }
+disp=$(paste <(xy 0) <(xy "$t") | awk '{ d = sqrt(($1 - $3)^2 + ($2 - $4)^2); if (d > m) m = d }
+    END { printf "%.3g", m }')
 surf=$(grep '^Time' "$case"/log.mlpgFluid 2>/dev/null | tail -1 | awk '{ print $NF }')
 echo "t = $t s: pressure L2 $(echo $l2 | cut -d' ' -f1), max speed $(echo $l2 | cut -d' ' -f2) m/s, max displacement $disp m, surface nodes ${surf:-?}"

@@ -11,22 +11,34 @@
 #                [N] and its time [s]
 #   rmsF         RMS of simulated - measured force over 0-3 s at the
 #                simulated samples (PySPH points, time-sorted, interpolated)
-#   Fmin_sim/_exp  most negative force over 1.25-2.0 s (the reverse force)
+#   Fmin_sim/_exp  most negative force over 1.25-2.0 s (the reverse force);
+#                Fmin_sim_smoothed: of its 0.05 s running mean
 #   Upeak_sim/_exp, rmsU  velocity at the probe: the measured trace starts
 #                at the bore's arrival, so both are aligned on the first
 #                time u > 0.5 m/s; peak (max over the first 0.3 s) and RMS
 #                over the first 1.3 s after arrival
 #   span         simulated times covered
 # and writes CASE/validation/series.dat: t Fx_fluid P1 Fx_solids H1
-# waterFront sedimentFront (NaN for the grains' columns: clear water), at
-# the samples of H1 and the front (every 5 steps).
+# waterFront sedimentFront (NaN for the grains' columns: clear water), and
+# CASE/validation/velocity.dat: t Ux at the velocity probe, both at the
+# samples of H1 and the front (every 5 steps); validation/plot.gp plots
+# them.
 set -e
 CASE=${1:-.}
 ROOT="${MPSDEM_DIR:-$(cd "$(dirname "$0")/../../../.." && pwd)}"   # MPSDEM_DIR for a copied case
 DATA="$ROOT/data/yeh_petroff_column"
 TMP="$(mktemp -d)"; trap 'rm -rf "$TMP"' EXIT
-# a restarted run writes postProcessing/<name>/<startTime>/: join them in time order
-join_fo() { for d in $(ls "$CASE/postProcessing/$1" 2>/dev/null | sort -g); do grep -v '^#' "$CASE/postProcessing/$1/$d/$2"; done; }
+# a restarted run writes postProcessing/<name>/<startTime>/: join them in
+# time order, each up to the next one's start time (a run restarted from an
+# earlier write repeats the times after it)
+join_fo() {
+    set -- $(ls "$CASE/postProcessing/$1" 2>/dev/null | sort -g | sed "s#^#$CASE/postProcessing/$1/#; s#\$#/$2#")
+    [ $# -gt 0 ] || return 0
+    awk 'FNR == 1 { k++; split(FILENAME, a, "/"); start[k] = a[length(a) - 1] }
+         !/^#/ { row[k, ++n[k]] = $0; t[k, n[k]] = $1 }
+         END { for (i = 1; i <= k; i++) for (r = 1; r <= n[i]; r++)
+                   if (i == k || t[i, r] + 0 <= start[i + 1] + 0) print row[i, r] }' "$@"
+}
 join_fo load forces.dat > "$TMP/F"; join_fo P1 probes.dat > "$TMP/P"
 join_fo velocity probes.dat > "$TMP/U"; join_fo H1 waveGauges.dat > "$TMP/H"
 join_fo waterFront front.dat > "$TMP/X"
@@ -41,6 +53,9 @@ awk 'FILENAME == ARGV[1] { F[$1] = $2; next } FILENAME == ARGV[2] { P[$1] = $2; 
      BEGIN { print "# t Fx_fluid P1 Fx_solids H1 waterFront sedimentFront  (SI; NaN: not in this case)" }
      ($1 in H) { printf "%s %s %s NaN %s %s NaN\n", $1, ($1 in F) ? F[$1] : "NaN", ($1 in P) ? P[$1] : "NaN", H[$1], $2 }' \
     "$TMP/F" "$TMP/P" "$TMP/H" "$TMP/X" > "$CASE/validation/series.dat"
+awk 'FILENAME == ARGV[1] { H[$1] = 1; next }
+     BEGIN { print "# t Ux  (probe velocity at (0.814, 0.305, 0.026) m [m/s])" }
+     ($1 in H) { print $1, $2 }' "$TMP/H" "$TMP/U" > "$CASE/validation/velocity.dat"
 
 awk '$2 >= 0.5 && $2 <= 0.85 { n++; st += $1; sx += $2; stt += $1 * $1; stx += $1 * $2 }
      $2 >= 0.895 && !a { a = $1 }
@@ -59,11 +74,16 @@ awk -v EXP="$TMP/Fexp" "$interp"'
      $1 > 3 { next }
      { if (!n++) t0 = $1; t1 = $1; e = $2 - at($1); e2 += e * e
        if ($1 >= 0.2 && $1 <= 0.8 && $2 > ms) { ms = $2; tms = $1 }
-       if ($1 >= 1.25 && $1 <= 2 && $2 < ns) { ns = $2; tns = $1 } }
+       if ($1 >= 1.25 && $1 <= 2 && $2 < ns) { ns = $2; tns = $1 }
+       if ($1 >= 1.2 && $1 <= 2.05) { q++; tq[q] = $1; fq[q] = $2 } }
      END { if (ms > -1e30) printf "Fpeak_sim %.2f %.4f\n", ms, tms; else print "Fpeak_sim none (no sample in 0.2-0.8 s)"
            printf "Fpeak_exp %.2f %.4f\n", me, tme
            printf "rmsF %.2f (%d samples)\n", sqrt(e2 / n), n
            if (ns < 1e30) printf "Fmin_sim %.2f %.4f\n", ns, tns
+           for (a = 1; a <= q; a++) if (tq[a] >= 1.25 && tq[a] <= 2) {
+               c = sum = 0; for (b = 1; b <= q; b++) if (tq[b] >= tq[a] - 0.025 && tq[b] <= tq[a] + 0.025) { c++; sum += fq[b] }
+               if (!sm || sum / c < sv) { sm = 1; sv = sum / c; tsv = tq[a] } }
+           if (sm) printf "Fmin_sim_smoothed %.2f %.4f (0.05 s running mean)\n", sv, tsv
            printf "Fmin_exp %.2f %.4f\n", ne, tne
            printf "span %.4g %.4g%s\n", t0, t1, t1 < 2.999 ? " (shorter than 0-3 s: the run ended early)" : "" }' "$TMP/F"
 
