@@ -128,6 +128,10 @@ int dict_find_dict(const struct dict *d, const char *key,
 int dict_get_list(const struct dict *d, const char *key,
                   const struct dict_value **out);
 
+/* An entry "( word ... )" of at most max words: out[k] point into d. */
+int dict_get_words(const struct dict *d, const char *key, int max,
+                   const char **out, int *n);
+
 /* The raw value of an entry (kind DICT_ENTRY, or DICT_DICT for a
  * sub-dictionary entry), for entries with free-form content. Marks used. */
 int dict_get_value(const struct dict *d, const char *key,

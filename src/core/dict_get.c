@@ -615,6 +615,20 @@ int dict_get_list(const struct dict *d, const char *key,
     return SIM_OK;
 }
 
+int dict_get_words(const struct dict *d, const char *key, int max,
+                   const char **out, int *n)
+{
+    const struct dict_value *list;
+    TRY(dict_get_list(d, key, &list));
+    *n = dict_value_len(list);
+    if (*n > max)
+        return dict_error(d, key, SIM_ERR_DICT, "%s: more than %d entries",
+                          key, max);
+    for (int k = 0; k < *n; k++)
+        TRY(dict_value_get_word(dict_value_at(list, k), &out[k]));
+    return SIM_OK;
+}
+
 int dict_get_value(const struct dict *d, const char *key,
                    const struct dict_value **out)
 {

@@ -18,8 +18,9 @@
 #include "core/error.h"
 #include "core/log.h"
 #include "linsolve/csr.h"
-#include "particles/operators/surface_quadrant.h"
 #include "mlpg/mlpg_solver.h"
+#include "particles/operators/operators.h"
+#include "particles/operators/surface_quadrant.h"
 
 #define PI 3.141592653589793
 
@@ -45,6 +46,13 @@ static const struct model_head slip_free = { "freeSlip",
 static const struct model_head *const slip_table[] = { &slip_no, &slip_free,
                                                        NULL };
 
+static const struct model_head shift_none = { "none", "nodes move with "
+                                              "the flow only" };
+static const struct model_head shift_lind = { "lind2012",
+    "Lind, Xu, Stansby & Rogers 2012 JCP 231 eqs. 20-24" };
+static const struct model_head *const shift_table[] = { &shift_none,
+                                                        &shift_lind, NULL };
+
 static const struct model_head self_mls = { "approximant", "Pan 2022 eq. 4.23" };
 static const struct model_head self_nodal = { "nodal", "doc/theory.md M0-03" };
 static const struct model_head *const self_table[] = {
@@ -58,6 +66,7 @@ const struct model_choice mlpg_solver_choices[] = {
     { "system/mlpgSchemes", "freeSurface", (const void *const *)fs_table },
     { "system/mlpgSchemes", "wallCondition",
       (const void *const *)slip_table },
+    { "system/mlpgSchemes", "shifting", (const void *const *)shift_table },
     { NULL, NULL, NULL }
 };
 
@@ -88,6 +97,18 @@ int mlpg_settings_read(const struct dict *transport,
                            (const void *const *)nodes_table, "lagrangian",
                            &S->nodes));
     TRY(mlpg_rows_read(schemes, &S->self_nodal, &S->support, &S->radius));
+    TRY(model_select_index(schemes, "shifting", "node shifting",
+                           (const void *const *)shift_table, "none",
+                           &S->shift));
+    const struct dict *coeffs = NULL;
+    S->shift_coeff = 0.01;
+    if (S->shift == MLPG_SHIFT_LIND2012)
+        TRY(dict_find_dict(schemes, "lind2012Coeffs", &coeffs));
+    if (coeffs) {
+        TRY(dict_get_scalar_or(coeffs, "coefficient", S->shift_coeff,
+                               &S->shift_coeff));
+        TRY(dict_range(coeffs, "coefficient", S->shift_coeff, 0, 1, 1));
+    }
     TRY(model_select_index(schemes, "freeSurface", "free-surface detector",
                            (const void *const *)fs_table, "none",
                            &S->free_surface));
@@ -262,6 +283,7 @@ static int dirichlet_nodes(struct mlpg_solver *s)
 {
     memset(s->dirichlet, 0, (size_t)s->n);
     memset(s->exclude, 0, (size_t)s->n);
+    memset(s->surface, 0, (size_t)s->n);
     /* dry wall nodes, no fluid node within the MLS support: p = 0, outside
      * the system (doc M0-23) */
     const struct neighbour_list *nl = &s->nl;
@@ -321,9 +343,15 @@ static int dirichlet_nodes(struct mlpg_solver *s)
                              flag, counts, flag);
         for (int i = 0; i < s->n; i++)
             if (s->type[i] == MLPG_FLUID)
-                given[i] = flag[i];
+                given[i] = s->surface[i] = flag[i];
         /* a wet wall node at the waterline: nothing counted in the
-         * 90-degree sector above it (its other sectors are the wall's) */
+         * 90-degree sector above it (its other sectors are the wall's) nor
+         * higher than itself by 0.05 dl within 2.5 dl (water that has
+         * risen along the wall puts the node back in the system). It
+         * stands at the water's edge: p = 0 and, like a dry node, in no
+         * other node's row, so that the surface nodes beside it do not
+         * take its p = 0 below the water level for a suction towards the
+         * wall (doc M0-22) */
         for (int i = 0; gn > 0 && i < s->n; i++) {
             if (s->type[i] != MLPG_WALL || given[i])
                 continue;
@@ -334,17 +362,18 @@ static int dirichlet_nodes(struct mlpg_solver *s)
                 double dy = s->x[3 * j + 1] - s->x[3 * i + 1];
                 double h = up[0] * dx + up[1] * dy;
                 if (counts[j] && nl->r[k] < 2.5 * s->S.dl
-                    && h > fabs(-up[1] * dx + up[0] * dy)) {
+                    && (h > fabs(-up[1] * dx + up[0] * dy)
+                        || h > 0.05 * s->S.dl)) {
                     above = 1;
                     break;
                 }
             }
-            given[i] = !above;
+            given[i] = s->exclude[i] = !above;
         }
     }
     s->n_surface = 0;
     for (int i = 0; i < s->n; i++) {
-        s->n_surface += s->dirichlet[i] && s->type[i] == MLPG_FLUID;
+        s->n_surface += s->surface[i];
         s->pgiven[i] = 0;
     }
     for (int f = 0; f < s->nfixed_p; f++) {
@@ -390,7 +419,8 @@ int mlpg_solver_init(struct mlpg_solver *s, const struct mlpg_settings *S,
     s->b = sim_calloc(n, sizeof *s->b);
     s->fsflag = sim_calloc(2 * n, 1);
     s->exclude = sim_calloc(n, 1);
-    if (!s->ustar || !s->nin || !s->pgiven || !s->wallU || !s->sector
+    s->surface = sim_calloc(n, 1);
+    if (!s->surface || !s->ustar || !s->nin || !s->pgiven || !s->wallU || !s->sector
         || !s->R || !s->b || !s->fsflag || !s->exclude)
         return SIM_ERR_NOMEM;
     int moving = 0;
@@ -400,6 +430,16 @@ int mlpg_solver_init(struct mlpg_solver *s, const struct mlpg_settings *S,
         return sim_error(SIM_ERR_INPUT, "system/mlpgSchemes: nodes fixed, "
                          "but a wall group of system/mlpgSolution has a "
                          "motion: moving walls need nodes lagrangian");
+    if (S->shift != MLPG_SHIFT_NONE && S->nodes == MLPG_NODES_FIXED)
+        return sim_error(SIM_ERR_INPUT, "system/mlpgSchemes: shifting with "
+                         "nodes fixed: only Lagrangian nodes are shifted "
+                         "(shifting none, or nodes lagrangian)");
+    if (S->shift != MLPG_SHIFT_NONE) {
+        struct pop_lattice lat;
+        TRY(pop_lattice_constants(mlpg_weight, 2, S->dl,
+                                  S->support * S->dl, &lat));
+        s->shift_n0 = lat.n0;
+    }
     if (moving) {
         s->x0 = sim_malloc(3 * n * sizeof *s->x0);
         if (!s->x0)
@@ -586,6 +626,8 @@ int mlpg_step(struct mlpg_solver *s, double dt)
                     s->x[3 * i + q] = s->x0[3 * i + q] + d[q];
             }
         }
+    if (!fixed && S->shift == MLPG_SHIFT_LIND2012)
+        mlpg_shift(s);
     for (int i = 0; i < n; i++)
         for (int q = 0; q < 2; q++)
             if (!isfinite(s->u[3 * i + q]) || !isfinite(s->p[i]))
@@ -606,7 +648,7 @@ void mlpg_solver_free(struct mlpg_solver *s)
         wall_motion_free(&s->groups[g].motion);
     free(s->groups);
     free(s->sector), free(s->R), free(s->b);
-    free(s->fsflag), free(s->exclude), free(s->cand);
+    free(s->fsflag), free(s->exclude), free(s->surface), free(s->cand);
     free(s->dw), free(s->dw_start);
     free(s->lap), free(s->sfdi), free(s->coef_start);
     cells_free(&s->grid);

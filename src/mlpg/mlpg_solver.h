@@ -31,6 +31,7 @@
 struct dict;
 
 enum mlpg_nodes { MLPG_NODES_FIXED, MLPG_NODES_LAGRANGIAN };
+enum mlpg_shift { MLPG_SHIFT_NONE, MLPG_SHIFT_LIND2012 };
 
 /* Wall nodes that move: a patch's nodes inside a box slide in place at a
  * velocity (a lid) or move rigidly with a motion model (a piston). */
@@ -62,6 +63,8 @@ struct mlpg_settings {
     int free_slip;             /* walls: free slip instead of no slip      */
     int has_pref;              /* pRefPoint given                          */
     double support, radius;    /* MLS support and R_I, in dl               */
+    int shift;                 /* enum mlpg_shift (doc M0-25)              */
+    double shift_coeff;        /* lind2012: A                              */
     double pref_point[3], pref_value;
 };
 
@@ -83,6 +86,7 @@ struct mlpg_solver {
     double *ustar, *nin, *sector, *R, *pgiven, *wallU, *b;
     uint8_t *dirichlet, *exclude;
     uint8_t *fsflag;           /* work: free-surface flags, free-slip nodes */
+    uint8_t *surface;          /* 1: a fluid node on the free surface      */
     double *lap, (*sfdi)[2];   /* per list entry + self (fixed nodes)      */
     int64_t *coef_start;       /* n + 1: node i's entries                  */
     int32_t *cand;             /* per entry: the node (mlpg_candidates)    */
@@ -106,6 +110,7 @@ struct mlpg_solver {
     struct mlpg_cloud c;
     struct mlpg_timers t;
     double time, last_dt;
+    double shift_n0;           /* sum of the MLS weights on a lattice      */
 };
 
 /* The keys of the rows: selfTerm (approximant | nodal, doc M0-03),
@@ -131,6 +136,10 @@ int mlpg_solver_init(struct mlpg_solver *s, const struct mlpg_settings *S,
 
 /* One projection step of dt. */
 int mlpg_step(struct mlpg_solver *s, double dt);
+
+/* Lagrangian nodes: shift the fluid nodes after the step (shifting.c,
+ * doc/theory.md M0-25). */
+void mlpg_shift(struct mlpg_solver *s);
 
 /* wallArea and viscousTraction of the wall nodes from the last step's
  * velocities and rows (wall_stress.c, doc/theory.md M0-24); zeros before

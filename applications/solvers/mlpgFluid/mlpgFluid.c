@@ -55,15 +55,8 @@ static int read_patches(struct fluid *f)
         return dict_error(f->patches, "dp", SIM_ERR_DICT, "dp must be > 0");
     dict_mark_used(f->patches, "types");
     dict_mark_used(f->patches, "wallLayers");
-    const struct dict_value *list;
-    TRY(dict_get_list(f->patches, "patches", &list));
-    f->npatches = dict_value_len(list);
-    if (f->npatches > MLPG_MAX_PATCHES)
-        return dict_error(f->patches, "patches", SIM_ERR_DICT, "at most %d "
-                          "wall patches", MLPG_MAX_PATCHES);
-    for (int k = 0; k < f->npatches; k++)
-        TRY(dict_value_get_word(dict_value_at(list, k), &f->patch_names[k]));
-    return SIM_OK;
+    return dict_get_words(f->patches, "patches", MLPG_MAX_PATCHES,
+                          f->patch_names, &f->npatches);
 }
 
 static int copy_cloud(struct fluid *f, const struct vtu_cloud *c,

@@ -67,16 +67,10 @@ struct fluid {
 /* constant/particlePatches: patch names, dimension and dp of the lattice. */
 static int read_patches(struct fluid *f)
 {
-    const struct dict_value *list;
     long dim;
     TRY(app_read_dict(&f->sv.app, "constant/particlePatches", &f->patches));
-    TRY(dict_get_list(f->patches, "patches", &list));
-    f->npatches = dict_value_len(list);
-    if (f->npatches > MAX_PATCHES)
-        return dict_error(f->patches, "patches", SIM_ERR_DICT, "more than "
-                          "%d patches", MAX_PATCHES);
-    for (int k = 0; k < f->npatches; k++)
-        TRY(dict_value_get_word(dict_value_at(list, k), &f->patch_names[k]));
+    TRY(dict_get_words(f->patches, "patches", MAX_PATCHES, f->patch_names,
+                       &f->npatches));
     TRY(dict_get_label(f->patches, "dimension", &dim));
     if (dim != 2 && dim != 3)
         return dict_error(f->patches, "dimension", SIM_ERR_DICT,
