@@ -9,7 +9,7 @@
 #   C_pb  mean (p_base - p_inf) / (rho u_a^2/2): base (rear point) against
 #         the centre-line node 7.5 D upstream
 # rho = 1000 kg/m^3, u_a = 0.1 m/s, D = 0.04 m (per unit width: q D =
-# 0.2 N/m). Reference (E3-14): St ~ 0.165, C_D ~ 1.33, C_pb ~ -0.7 at
+# 0.2 N/m). Plots C_D and C_L against t: validation/shedding.png. Reference (E3-14): St ~ 0.165, C_D ~ 1.33, C_pb ~ -0.7 at
 # Re 100 (unbounded flow; the channel's blockage D/h = 6.7 % raises them).
 set -e
 dir=${1:?Usage: validation/shedding.sh DIR [TSTART]}
@@ -37,3 +37,13 @@ awk -v t0="${2:-}" 'FNR == NR { n++; t[n] = $1; fx[n] = $2; fy[n] = $3; fv[n] = 
         printf "St %.4f (f %.4f Hz over %d periods, %.2f-%.2f s)\n", f * 0.04 / 0.1, f, nu - 1, first, last
         printf "C_D %.4f (viscous %.4f)\nC_L amplitude %.4f\n", cd / k / q, cv / k / q, (hi - lo) / 2 / q
         if (kp) printf "C_pb %.4f\n", cp / kp / 5 }' "$F" "$P"
+awk '{ print $1, $2 / 0.2, $3 / 0.2 }' "$F" > "$dir/coefficients.dat"
+cd "${0%/*}/.." || exit 1
+gnuplot <<GP
+set terminal pngcairo size 900,450
+set output 'validation/shedding.png'
+set grid; set key bottom right
+set xlabel 't [s]'; set ylabel 'C_D, C_L'; set yrange [-0.6:1.6]
+set title 'Cylinder at Re 100 (mlpgFluid, 24 nodes on the cylinder)'
+plot '$dir/coefficients.dat' u 1:2 w l lc rgb 'red' t 'C_D', '' u 1:3 w l lc rgb 'blue' t 'C_L'
+GP

@@ -17,7 +17,7 @@ set xlabel 'x [m]'; set ylabel 'eta [m]'; set yrange [-0.03:0.03]
 set title 'Piston wavemaker, a = 0.01 m, omega = 4.5415 rad/s, dl = 0.04 m: t = 24 s'
 plot '$case/theory_24.dat' w l lc rgb 'black' t 'linear theory (S-10)', \
      '$case/eta_24.dat' w l lc rgb 'red' t 'mlpgFluid (free-surface nodes)'
-set title 't = 30 s (the front has reflected at the end wall, x = 30 m, since ~26 s; the theory has no end wall)'
+set title 't = 30 s (the front has reflected at the end wall, x = 30 m, since about 26 s; the theory has no end wall)'
 plot '$case/theory_30.dat' w l lc rgb 'black' t 'linear theory (S-10)', \
      '$case/eta_30.dat' w l lc rgb 'red' t 'mlpgFluid'
 set title 'Mean water level (E3-17)'; set xlabel 't [s]'; set ylabel 'mean eta [m]'; set autoscale y
