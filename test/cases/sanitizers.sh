@@ -4,7 +4,7 @@
 # behaviour, no leak. One PASS/FAIL line per test program.
 ROOT="$(cd "$(dirname "$0")/../.." && pwd)"
 cd "$ROOT" || exit 1
-libs="core io particles linsolve functionObjects coupling coupled solver dem mlpg"
+libs="core io particles linsolve functionObjects coupling coupled solver dem mlpg isph"
 targets=$(for l in $libs; do
     for f in test/unit/$l/*.c; do [ -f "$f" ] && echo "build-san/test/unit/$l/$(basename "$f" .c)"; done
 done)
