@@ -50,6 +50,8 @@ struct isph_cloud {
     const double *V;          /* per particle [m^2]                      */
     const struct neighbour_list *nl; /* rc >= support h                  */
     const struct isph_kernel *kernel;
+    const uint8_t *active;    /* NULL, or 1: corrections made (others    */
+                              /* are left alone: dry walls)              */
     double h;                 /* smoothing length [m]                    */
     int norm;                 /* enum isph_lap_norm                      */
     /* per particle, by isph_corrections(): */
@@ -58,14 +60,14 @@ struct isph_cloud {
     double *S;                /* 2: S_a                                  */
 };
 
-/* L_a, c_a and S_a of every particle. SIM_ERR_NUMERIC naming the
- * particle when L_a^-1 or Gamma_a is singular (fewer than two
+/* L_a, c_a and S_a of every (active) particle. SIM_ERR_NUMERIC naming
+ * the particle when L_a^-1 or Gamma_a is singular (fewer than two
  * independent neighbours in the support). */
 int isph_corrections(struct isph_cloud *c);
 
-/* grad f of particle a (5.35). */
-void isph_gradient(const struct isph_cloud *c, const double *f, int a,
-                   double g[2]);
+/* grad f of particle a (5.35), f of particle b at f[stride b]. */
+void isph_gradient(const struct isph_cloud *c, const double *f, int stride,
+                   int a, double g[2]);
 
 /* The Laplacian of particle a as coefficients over row a of the list:
  * lap f_a = sum_k l[k] (f_{j_k} - f_a), k over the list's row a (the

@@ -29,6 +29,8 @@ int isph_corrections(struct isph_cloud *c)
 #pragma omp parallel for schedule(static)
     for (int a = 0; a < c->n; a++) {
         double Li[4] = { 0 }, G[4] = { 0 }, S[2] = { 0 };
+        if (c->active && !c->active[a])
+            continue;
         for (int64_t k = nl->start[a]; k < nl->start[a + 1]; k++) {
             int b = nl->j[k];
             double r = nl->r[k], dx[2], gw[2];
@@ -72,8 +74,8 @@ int isph_corrections(struct isph_cloud *c)
     return SIM_OK;
 }
 
-void isph_gradient(const struct isph_cloud *c, const double *f, int a,
-                   double g[2])
+void isph_gradient(const struct isph_cloud *c, const double *f, int stride,
+                   int a, double g[2])
 {
     const struct neighbour_list *nl = c->nl;
     const double reach = c->kernel->support * c->h, *L = c->L + 4 * a;
@@ -84,7 +86,7 @@ void isph_gradient(const struct isph_cloud *c, const double *f, int a,
         if (b == a || !(r > 0) || r >= reach)
             continue;
         pair(c, a, b, r, dx, gw);
-        double df = c->V[b] * (f[b] - f[a]);
+        double df = c->V[b] * (f[stride * b] - f[stride * a]);
         s[0] += df * gw[0];
         s[1] += df * gw[1];
     }

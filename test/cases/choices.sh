@@ -23,7 +23,7 @@ cd "$ROOT" || exit 1
 TMP=$(mktemp -d); trap 'rm -rf "$TMP"' EXIT
 status=0
 
-for p in mpsFluid demSolid mlpgFluid; do
+for p in mpsFluid demSolid mlpgFluid isphSediment; do
     if ! bin/$p -listModels > "$TMP/$p.out" 2>&1; then
         echo "FAIL listModels_$p: bin/$p -listModels exited non-zero"; exit 1
     fi
@@ -32,7 +32,7 @@ for p in mpsFluid demSolid mlpgFluid; do
     if [ -s "$TMP/$p.reg" ]; then echo "PASS listModels_$p"
     else echo "FAIL listModels_$p: no FILE KEY NAME lines"; exit 1; fi
 done
-sort -u "$TMP/mpsFluid.reg" "$TMP/demSolid.reg" "$TMP/mlpgFluid.reg" > "$TMP/all.reg"
+sort -u "$TMP/mpsFluid.reg" "$TMP/demSolid.reg" "$TMP/mlpgFluid.reg" "$TMP/isphSediment.reg" > "$TMP/all.reg"
 
 # check REGISTRY DICT LABEL FILE_FILTER REVERSE: one PASS/FAIL line per
 # registered entry found in DICT ("*" filter: every registered file).
@@ -114,7 +114,7 @@ check()
     END { finish(); exit fails > 0 }' "$1" "$2"
 }
 
-for p in mpsFluid demSolid mlpgFluid; do
+for p in mpsFluid demSolid mlpgFluid isphSediment; do
     ref=$(find applications -name "$p.reference")
     check "$TMP/$p.reg" "$ref" "${ref##*/}" "*" 1 || status=1
 done

@@ -125,7 +125,7 @@ static void test_e4_01_gradient(void **state)
             f[a] = 2 + 3 * cl.x[3 * a] - 1.5 * cl.x[3 * a + 1];
         for (int a = 0; a < cl.n; a++) {
             double g[2];
-            isph_gradient(&cl.c, f, a, g);
+            isph_gradient(&cl.c, f, 1, a, g);
             worst = fmax(worst, fmax(fabs(g[0] - 3), fabs(g[1] + 1.5)));
         }
         printf("E4-01 %s: largest gradient error %.2e (corners and edges "

@@ -1,0 +1,272 @@
+/*
+ * isphSediment — two-phase ISPH for suspended sediment (Pan 2022 thesis
+ * ch. 5; doc/theory.md S; src/isph/isph_solver.h for the step), 2-D: one
+ * set of particles moving with the water, carrying the sediment volume
+ * fraction alpha.sediment and velocity U.sediment.
+ *
+ * Reads   system/controlDict, system/isphSchemes, system/isphSolution,
+ *         constant/transportProperties (rho, nu of the water),
+ *         constant/sedimentProperties (rho, d, alphaMax), constant/g,
+ *         constant/particlePatches (genParticles: dimension 2, dp),
+ *         <startTime>/fluid.vtu (genParticles with `origin` on the tank
+ *         corner and `wallLayers 1`; alpha.sediment and U.sediment if the
+ *         cloud has them, else from isphSolution's alphaSediment)
+ * Writes  <time>/fluid.vtu, fluid.pvd, postProcessing/
+ *
+ * Every key: isphSediment.reference beside this file.
+ */
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "core/dict.h"
+#include "core/error.h"
+#include "core/gravity.h"
+#include "core/log.h"
+#include "functionObjects/functionObject.h"
+#include "functionObjects/mps_functionObjects.h"
+#include "io/vtu.h"
+#include "isph/isph_solver.h"
+#include "solver/solver.h"
+
+enum { ISPH_MAX_PATCHES = 64 };
+
+struct sediment {
+    struct solver sv;
+    struct dict *transport, *sediment, *gravity, *schemes, *solution,
+        *patches;
+    const char *patch_names[ISPH_MAX_PATCHES];
+    int npatches;
+    struct isph_solver s;
+    double dp;
+    struct vtu_cloud cloud;
+    struct vtu_field fields[STORE_MAX_FIELDS];
+};
+
+static int read_patches(struct sediment *f)
+{
+    long dim;
+    TRY(app_read_dict(&f->sv.app, "constant/particlePatches", &f->patches));
+    TRY(dict_get_label(f->patches, "dimension", &dim));
+    if (dim != 2)
+        return dict_error(f->patches, "dimension", SIM_ERR_DICT,
+                          "isphSediment is 2-D: dimension must be 2");
+    TRY(dict_get_scalar(f->patches, "dp", &f->dp));
+    if (!(f->dp > 0))
+        return dict_error(f->patches, "dp", SIM_ERR_DICT, "dp must be > 0");
+    dict_mark_used(f->patches, "types");
+    dict_mark_used(f->patches, "wallLayers");
+    return dict_get_words(f->patches, "patches", ISPH_MAX_PATCHES,
+                          f->patch_names, &f->npatches);
+}
+
+/* alphaSediment { value a0; gradient (gx gy 0); origin (x0 y0 0); }:
+ * alpha_s = a0 + g.(x - x0) on the water particles, clipped at 0 (the
+ * thesis's cases 1a, 1b: uniform and linear). */
+static int initial_alpha(struct sediment *f)
+{
+    struct isph_solver *s = &f->s;
+    const struct dict *d;
+    double a0, g[3] = { 0, 0, 0 }, o[3] = { 0, 0, 0 };
+    TRY(dict_find_dict(f->solution, "alphaSediment", &d));
+    if (!d)
+        return SIM_OK; /* clear water */
+    TRY(dict_get_scalar(d, "value", &a0));
+    TRY(dict_get_vector_or(d, "gradient", 3, g, g));
+    TRY(dict_get_vector_or(d, "origin", 3, o, o));
+    for (int i = 0; i < s->n; i++) {
+        if (s->type[i] != ISPH_FLUID)
+            continue;
+        double a = a0 + g[0] * (s->x[3 * i] - o[0])
+                 + g[1] * (s->x[3 * i + 1] - o[1]);
+        s->alpha[i] = fmax(a, 0);
+    }
+    return SIM_OK;
+}
+
+static int copy_cloud(struct sediment *f, const struct vtu_cloud *c,
+                      const char *path)
+{
+    struct isph_solver *s = &f->s;
+    const struct vtu_field *ty, *pa, *ve, *pr, *no;
+    const struct vtu_field *id = vtu_find(c, "id"), *al = vtu_find(c,
+        "alpha.sediment"), *us = vtu_find(c, "U.sediment"),
+        *vo = vtu_find(c, "volume");
+    TRY(vtu_require(c, path, "type", VTU_INT32, 1, &ty));
+    TRY(vtu_require(c, path, "patch", VTU_INT32, 1, &pa));
+    TRY(vtu_require(c, path, "velocity", VTU_FLOAT64, 3, &ve));
+    TRY(vtu_require(c, path, "pressure", VTU_FLOAT64, 1, &pr));
+    TRY(vtu_require(c, path, "normal", VTU_FLOAT64, 3, &no));
+    if (al) TRY(vtu_require(c, path, "alpha.sediment", VTU_FLOAT64, 1, &al));
+    if (us) TRY(vtu_require(c, path, "U.sediment", VTU_FLOAT64, 3, &us));
+    if (vo) TRY(vtu_require(c, path, "volume", VTU_FLOAT64, 1, &vo));
+    if (id) TRY(vtu_require(c, path, "id", VTU_INT64, 1, &id));
+    if (c->n > 100000000)
+        return sim_error(SIM_ERR_INPUT, "%s: too many particles", path);
+    int n = (int)c->n;
+    TRY(isph_fields_alloc(s, n));
+    memcpy(s->x, c->points, sizeof *s->x * 3 * n);
+    memcpy(s->u, ve->data, sizeof *s->u * 3 * n);
+    memcpy(s->p, pr->data, sizeof *s->p * n);
+    memcpy(s->normal, no->data, sizeof *s->normal * 3 * n);
+    memcpy(s->type, ty->data, sizeof *s->type * n);
+    memcpy(s->patch, pa->data, sizeof *s->patch * n);
+    memcpy(s->us, us ? us->data : ve->data, sizeof *s->us * 3 * n);
+    if (al)
+        memcpy(s->alpha, al->data, sizeof *s->alpha * n);
+    if (vo)
+        memcpy(s->V, vo->data, sizeof *s->V * n);
+    for (int i = 0; i < n; i++) {
+        s->id[i] = id ? ((const int64_t *)id->data)[i] : i;
+        if (s->type[i] != ISPH_FLUID && s->type[i] != ISPH_WALL)
+            return sim_error(SIM_ERR_INPUT, "%s: particle %d has type %d (0 "
+                             "fluid, 1 wall; ISPH has one layer of wall "
+                             "particles: system/particleDict wallLayers 1)",
+                             path, i, s->type[i]);
+        if (s->x[3 * i + 2] != 0)
+            return sim_error(SIM_ERR_INPUT, "%s: particle %d has z = %g "
+                             "(2-D)", path, i, s->x[3 * i + 2]);
+        const double *nn = s->normal + 3 * i;
+        if (s->type[i] == ISPH_WALL && fabs(hypot(nn[0], nn[1]) - 1) > 1e-6)
+            return sim_error(SIM_ERR_INPUT, "%s: wall particle %d has no unit "
+                             "normal in the x-y plane", path, i);
+    }
+    return al ? SIM_OK : initial_alpha(f);
+}
+
+static int create(struct solver *sv)
+{
+    struct sediment *f = (struct sediment *)sv;
+    struct isph_settings S = { 0 };
+    struct linsolve *ls = NULL;
+    const struct dict *ppe;
+    char rel[256], path[4400];
+    struct vtu_cloud c = { 0 };
+    TRY(read_patches(f));
+    TRY(app_read_dict(&sv->app, "constant/transportProperties",
+                      &f->transport));
+    TRY(app_read_dict(&sv->app, "constant/sedimentProperties",
+                      &f->sediment));
+    TRY(gravity_case(&sv->app, 2, S.g, &f->gravity));
+    TRY(app_read_dict(&sv->app, "system/isphSchemes", &f->schemes));
+    TRY(app_read_dict(&sv->app, "system/isphSolution", &f->solution));
+    TRY(isph_settings_read(f->transport, f->sediment, f->schemes, &S));
+    S.dl = f->dp;
+    S.h *= f->dp;
+    if (S.kernel->support * S.h < 2.5 * S.dl)
+        return dict_error(f->schemes, "smoothingLength", SIM_ERR_DICT,
+                          "smoothingLength %g: the kernel's support (%g dl) "
+                          "must reach the free-surface detector's 2.5 dl",
+                          S.h / S.dl, S.kernel->support * S.h / S.dl);
+    TRY(dict_get_dict(f->solution, "PPE", &ppe));
+    snprintf(rel, sizeof rel, "%s/fluid.vtu", sv->rt.name);
+    app_path(&sv->app, rel, path, sizeof path);
+    int rc = vtu_read(path, &c);
+    if (!rc)
+        rc = vtu_check_finite(&c, path);
+    if (!rc)
+        rc = copy_cloud(f, &c, path);
+    vtu_cloud_free(&c);
+    if (rc)
+        return rc;
+    TRY(linsolve_create(ppe, &ls));
+    TRY(isph_solver_init(&f->s, &S, ls));
+    TRY(solver_check_unused(sv, f->schemes));
+    TRY(solver_check_unused(sv, f->solution));
+    TRY(solver_check_unused(sv, f->sediment));
+    return solver_check_unused(sv, f->transport);
+}
+
+static int refresh_scene(struct solver *sv)
+{
+    struct sediment *f = (struct sediment *)sv;
+    store_cloud(&f->s.st, sv->rt.value, f->fields, &f->cloud);
+    sv->scene = (struct fo_scene){
+        .time = sv->rt.value, .dt = sv->rt.dt, .step = sv->rt.step,
+        .dim = 2, .cloud_name = "fluid", .store = &f->s.st,
+        .spacing = f->dp, .patch_names = f->patch_names,
+        .npatches = f->npatches, .solver = &f->s };
+    return SIM_OK;
+}
+
+static int advance(struct solver *sv)
+{
+    struct sediment *f = (struct sediment *)sv;
+    return isph_step(&f->s, sv->rt.dt);
+}
+
+static int write_fields(struct solver *sv, const char *dir)
+{
+    struct sediment *f = (struct sediment *)sv;
+    char path[4400];
+    TRY(refresh_scene(sv));
+    snprintf(path, sizeof path, "%s/fluid.vtu", dir);
+    return vtu_write(path, &f->cloud, sv->rt.binary);
+}
+
+static void progress(struct solver *sv, char *buf, size_t n)
+{
+    const struct sediment *f = (const struct sediment *)sv;
+    snprintf(buf, n, "PPE: %d iterations, residual %.3g  surface %ld  "
+             "alpha clipped %ld", f->s.last.iters, f->s.last.res_rel,
+             f->s.n_surface, f->s.n_clipped);
+}
+
+static void final_stats(struct solver *sv)
+{
+    const struct sediment *f = (const struct sediment *)sv;
+    const struct isph_timers *t = &f->s.t;
+    double ns = (double)f->s.n * (double)(t->steps ? t->steps : 1);
+    log_info("\nISPH statistics");
+    log_info("    steps                 %ld", t->steps);
+    log_info("    PPE iterations        %ld (%.1f per step)", t->ppe_iters,
+             t->steps ? (double)t->ppe_iters / t->steps : 0.0);
+    log_info("    time per particle-step [us]: neighbours %.3f  explicit "
+             "%.3f  PPE %.3f  correction %.3f", 1e6 * t->neighbours / ns,
+             1e6 * t->explicit_ / ns, 1e6 * t->ppe / ns,
+             1e6 * t->correction / ns);
+}
+
+static void cleanup(struct solver *sv)
+{
+    struct sediment *f = (struct sediment *)sv;
+    isph_solver_free(&f->s);
+    dict_free(f->transport);
+    dict_free(f->sediment);
+    dict_free(f->gravity);
+    dict_free(f->schemes);
+    dict_free(f->solution);
+    dict_free(f->patches);
+}
+
+static void list_models(void)
+{
+    model_choices_print(isph_solver_choices, NULL, NULL);
+    model_choices_print(linsolve_choices, "system/isphSolution", "PPE/");
+}
+
+static const struct fo_ops *const *const fo_tables[] = {
+    fo_generic_table, mps_fo_table, NULL };
+
+static const struct solver_ops sediment_ops = {
+    .name = "isphSediment",
+    .description = "two-phase ISPH for suspended sediment (2-D)",
+    .cloud = "fluid",
+    .list_models = list_models,
+    .create = create,
+    .fo_tables = fo_tables,
+    .refresh_scene = refresh_scene,
+    .advance = advance,
+    .dump_failed_advance = 1,
+    .write = write_fields,
+    .progress = progress,
+    .stats = final_stats,
+    .cleanup = cleanup,
+};
+
+int main(int argc, char **argv)
+{
+    static struct sediment f;
+    return solver_main(&sediment_ops, &f.sv, argc, argv);
+}

@@ -1,0 +1,470 @@
+/*
+ * isph_solver.c — the two-phase ISPH step (isph_solver.h; Pan 2022 thesis
+ * eqs. 5.5-5.13, 5.19-5.31, 5.40-5.48; doc/theory.md S.3).
+ */
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "core/app.h"
+#include "core/dict.h"
+#include "core/error.h"
+#include "isph/isph_solver.h"
+#include "linsolve/csr.h"
+#include "particles/operators/surface_quadrant.h"
+
+static const int DIM_RHO[7] = { 1, -3, 0, 0, 0, 0, 0 };
+static const int DIM_NU[7] = { 0, 2, -1, 0, 0, 0, 0 };
+static const int DIM_LEN[7] = { 0, 1, 0, 0, 0, 0, 0 };
+
+static const struct model_head norm_ti = { "traceInverse",
+    "2 tr(Gamma^-1)/n, Pan 2022 eq. 5.36 as printed" };
+static const struct model_head norm_it = { "inverseTrace",
+    "2n/tr(Gamma), doc/theory.md S0-03" };
+static const struct model_head *const norm_table[] = { &norm_ti, &norm_it,
+                                                       NULL };
+const struct model_choice isph_solver_choices[] = {
+    { "system/isphSchemes", "kernel", (const void *const *)isph_kernels },
+    { "system/isphSchemes", "laplacian", (const void *const *)norm_table },
+    { NULL, NULL, NULL },
+};
+
+int isph_settings_read(const struct dict *transport,
+                       const struct dict *sediment, const struct dict *schemes,
+                       struct isph_settings *S)
+{
+    double hf;
+    TRY(dict_get_scalar_dim(transport, "rho", DIM_RHO, &S->rho_f));
+    TRY(dict_range(transport, "rho", S->rho_f, 0, 1e6, 1));
+    TRY(dict_get_scalar_dim(transport, "nu", DIM_NU, &S->nu_f));
+    TRY(dict_range(transport, "nu", S->nu_f, 0, 1e3, 0));
+    TRY(dict_get_scalar_dim(sediment, "rho", DIM_RHO, &S->rho_s));
+    TRY(dict_range(sediment, "rho", S->rho_s, 0, 1e6, 1));
+    TRY(dict_get_scalar_dim(sediment, "d", DIM_LEN, &S->d_s));
+    TRY(dict_range(sediment, "d", S->d_s, 0, 1, 1));
+    TRY(dict_get_scalar_or(sediment, "alphaMax", 0.606, &S->alpha_sm));
+    TRY(dict_range(sediment, "alphaMax", S->alpha_sm, 0, 1, 1));
+    TRY(model_select(schemes, "kernel", "SPH kernel",
+                     (const void *const *)isph_kernels, "wendlandC2",
+                     (const void **)&S->kernel));
+    TRY(dict_get_scalar_or(schemes, "smoothingLength", 1.3, &hf));
+    TRY(dict_range(schemes, "smoothingLength", hf, 1, 2, 0));
+    S->h = hf; /* in dl until the caller knows dl */
+    TRY(model_select_index(schemes, "laplacian", "Laplacian normalisation",
+                           (const void *const *)norm_table, "traceInverse",
+                           &S->norm));
+    TRY(dict_get_scalar_or(schemes, "lesCoefficient", 0.1, &S->cs));
+    TRY(dict_range(schemes, "lesCoefficient", S->cs, 0, 1, 0));
+    TRY(dict_get_scalar_or(schemes, "lesExponent", 1, &S->les_n));
+    return dict_range(schemes, "lesExponent", S->les_n, 0, 10, 0);
+}
+
+int isph_fields_alloc(struct isph_solver *s, int n)
+{
+    struct store *st = &s->st;
+    store_init(st, "field of the ISPH cloud");
+    TRY(store_add(st, "position", "[m]", VTU_FLOAT64, 3, STORE_POINTS,
+                  &s->x));
+    TRY(store_add(st, "velocity", "water [m/s]", VTU_FLOAT64, 3,
+                  STORE_WRITE, &s->u));
+    TRY(store_add(st, "pressure", "[Pa]", VTU_FLOAT64, 1, STORE_WRITE,
+                  &s->p));
+    TRY(store_add(st, "type", "0 fluid, 1 wall", VTU_INT32, 1, STORE_WRITE,
+                  &s->type));
+    TRY(store_add(st, "patch", "wall region, -1 fluid", VTU_INT32, 1,
+                  STORE_WRITE, &s->patch));
+    TRY(store_add(st, "id", "persistent", VTU_INT64, 1, STORE_WRITE,
+                  &s->id));
+    TRY(store_add(st, "normal", "wall: unit, into the solid", VTU_FLOAT64,
+                  3, STORE_WRITE, &s->normal));
+    TRY(store_add(st, "alpha.sediment", "sediment volume fraction",
+                  VTU_FLOAT64, 1, STORE_WRITE, &s->alpha));
+    TRY(store_add(st, "U.sediment", "sediment velocity [m/s]", VTU_FLOAT64,
+                  3, STORE_WRITE, &s->us));
+    TRY(store_add(st, "volume", "V = m_f/(alpha_f rho_f) (5.34) [m^2]",
+                  VTU_FLOAT64, 1, STORE_WRITE, &s->V));
+    TRY(store_add(st, "nut", "eddy viscosity (5.9) [m^2/s]", VTU_FLOAT64,
+                  1, STORE_WRITE, &s->nut));
+    TRY(store_add(st, "freeSurface", "1: p = 0", VTU_UINT8, 1, STORE_WRITE,
+                  &s->fs));
+    TRY(store_resize(st, (size_t)n));
+    s->n = n;
+    return SIM_OK;
+}
+
+static int build_list(struct isph_solver *s)
+{
+    double t0 = app_wall_time();
+    const double rc = s->S.kernel->support * s->S.h * 1.001;
+    TRY(cells_build(&s->grid, 2, s->x, s->n, rc / 2, NULL, NULL));
+    if (s->grid.n_outside)
+        return sim_error(SIM_ERR_NUMERIC, "%d ISPH particles have a "
+                         "non-finite position", s->grid.n_outside);
+    TRY(neighbour_build(&s->nl, &s->grid, s->x, rc));
+    s->t.neighbours += app_wall_time() - t0;
+    return SIM_OK;
+}
+
+/* V (5.34), dry walls (V = 0, inactive), corrections at the current
+ * positions. A wall particle is wet when a water particle within its
+ * support is not lower than itself by more than dl/2 (doc/theory.md
+ * S0-06, as mlpgFluid's M0-23): above the water its support holds only
+ * water below it and its Neumann row loses its diagonal. */
+static int prepare(struct isph_solver *s)
+{
+    const struct neighbour_list *nl = &s->nl;
+    const double reach = s->S.kernel->support * s->S.h, *g = s->S.g;
+    const double gn = hypot(g[0], g[1]);
+    const double up[2] = { gn > 0 ? -g[0] / gn : 0, gn > 0 ? -g[1] / gn : 0 };
+    for (int i = 0; i < s->n; i++) {
+        int wet = s->type[i] == ISPH_FLUID;
+        for (int64_t k = nl->start[i]; k < nl->start[i + 1] && !wet; k++) {
+            int j = nl->j[k];
+            double h = up[0] * (s->x[3 * j] - s->x[3 * i])
+                     + up[1] * (s->x[3 * j + 1] - s->x[3 * i + 1]);
+            wet = s->type[j] == ISPH_FLUID && nl->r[k] < reach
+               && h >= -0.5 * s->S.dl;
+        }
+        s->rows[i] = (uint8_t)wet;
+        s->V[i] = wet ? s->m[i] / ((1 - s->alpha[i]) * s->S.rho_f) : 0;
+    }
+    return isph_corrections(&s->cl);
+}
+
+int isph_solver_init(struct isph_solver *s, const struct isph_settings *S,
+                     struct linsolve *ls)
+{
+    s->S = *S;
+    s->ls = ls;
+    size_t n = (size_t)s->n;
+#define ALLOC(p, k) (s->p = sim_calloc((k) * n, sizeof *s->p))
+    if (!ALLOC(x0, 3) || !ALLOC(ustar, 3) || !ALLOC(m, 1) || !ALLOC(L, 4)
+        || !ALLOC(c, 1) || !ALLOC(Sv, 2) || !ALLOC(b, 1)
+        || !ALLOC(dalpha_f, 1) || !ALLOC(gu, 4) || !ALLOC(gus, 4)
+        || !ALLOC(ga, 2) || !ALLOC(divu, 1) || !ALLOC(Tf, 3) || !ALLOC(Ts, 3)
+        || !ALLOC(acc_f, 2) || !ALLOC(acc_s, 2) || !ALLOC(gamma, 1)
+        || !ALLOC(counts, 1) || !ALLOC(rows, 1))
+        return SIM_ERR_NOMEM;
+#undef ALLOC
+    for (int i = 0; i < s->n; i++) {
+        if (s->type[i] == ISPH_WALL) { /* walls: pure water at rest */
+            s->alpha[i] = 0;
+            memset(s->u + 3 * i, 0, 3 * sizeof(double));
+            memset(s->us + 3 * i, 0, 3 * sizeof(double));
+        }
+        if (!(s->alpha[i] >= 0 && s->alpha[i] <= S->alpha_sm))
+            return sim_error(SIM_ERR_INPUT, "particle %d: alpha.sediment "
+                             "%g outside [0, alphaMax = %g]", i, s->alpha[i],
+                             S->alpha_sm);
+        /* m_f from the volume the particle stands for (dl^2 at the start) */
+        double V = s->V[i] > 0 ? s->V[i] : S->dl * S->dl;
+        s->m[i] = V * (1 - s->alpha[i]) * S->rho_f;
+        s->dalpha_f[i] = 0; /* the first step: alpha_f^-1 = alpha_f^0 */
+    }
+    s->cl = (struct isph_cloud){ .n = s->n, .x = s->x, .V = s->V,
+                                 .nl = &s->nl, .kernel = S->kernel,
+                                 .active = s->rows, .h = S->h,
+                                 .norm = S->norm, .L = s->L, .c = s->c,
+                                 .S = s->Sv };
+    TRY(build_list(s));
+    return prepare(s);
+}
+
+/* Drag coefficient gamma (5.12)-(5.13) with the Re -> 0 guard. */
+static double drag(const struct isph_settings *S, double as, double du)
+{
+    double af = 1 - as, nu = S->nu_f, d = S->d_s;
+    if (as > 0.2) /* Ergun */
+        return 150 * as * S->rho_f * nu / (af * d * d)
+             + 1.75 * S->rho_f * du / d;
+    double re = af * du * d / nu;
+    double cd_du = re < 1000 ? 24 * nu * (1 + 0.15 * pow(re, 0.687)) / (af * d)
+                             : 0.44 * du;
+    return 0.75 * cd_du * S->rho_f / d * pow(af, -1.65);
+}
+
+/* nu_s^0 (5.7), capped at 0.95 alpha_sm (D-02). */
+static double nu_s0(const struct isph_settings *S, double as)
+{
+    if (as <= 0)
+        return 0;
+    double a = fmin(as, 0.95 * S->alpha_sm);
+    double q = cbrt(S->alpha_sm / a) - 1;
+    return 1.2 * S->rho_f / S->rho_s * S->nu_f / (q * q);
+}
+
+/* Step 1: gradients at r^n, stresses, drag. */
+static void gradients(struct isph_solver *s)
+{
+    const struct isph_settings *S = &s->S;
+    const double les = (S->cs * S->dl) * (S->cs * S->dl);
+#pragma omp parallel for schedule(static)
+    for (int a = 0; a < s->n; a++) {
+        double *gu = s->gu + 4 * a, *gs = s->gus + 4 * a;
+        memset(gu, 0, 4 * sizeof *gu);
+        memset(gs, 0, 4 * sizeof *gs);
+        s->ga[2 * a] = s->ga[2 * a + 1] = s->divu[a] = 0;
+        s->nut[a] = s->gamma[a] = 0;
+        memset(s->Tf + 3 * a, 0, 3 * sizeof(double));
+        memset(s->Ts + 3 * a, 0, 3 * sizeof(double));
+        if (!s->rows[a])
+            continue;
+        for (int q = 0; q < 2; q++) {
+            isph_gradient(&s->cl, s->u + q, 3, a, gu + 2 * q);
+            isph_gradient(&s->cl, s->us + q, 3, a, gs + 2 * q);
+        }
+        isph_gradient(&s->cl, s->alpha, 1, a, s->ga + 2 * a);
+        s->divu[a] = gu[0] + gu[3];
+        double as = s->alpha[a];
+        double damp = pow(fmax(0, 1 - as / S->alpha_sm), S->les_n);
+        /* |S| = sqrt(2 S:S), S = (grad u + grad u^T)/2 */
+        double sxy = 0.5 * (gu[1] + gu[2]);
+        double sf = sqrt(2 * (gu[0] * gu[0] + gu[3] * gu[3] + 2 * sxy * sxy));
+        double sxs = 0.5 * (gs[1] + gs[2]);
+        double ss = sqrt(2 * (gs[0] * gs[0] + gs[3] * gs[3] + 2 * sxs * sxs));
+        double ntf = les * sf * damp, nts = les * ss * damp;
+        s->nut[a] = ntf;
+        double nf = S->nu_f + ntf, ns = nu_s0(S, as) + nts;
+        double *Tf = s->Tf + 3 * a, *Ts = s->Ts + 3 * a;
+        Tf[0] = nf * 2 * gu[0];
+        Tf[1] = nf * (gu[1] + gu[2]);
+        Tf[2] = nf * 2 * gu[3];
+        Ts[0] = ns * 2 * gs[0];
+        Ts[1] = ns * (gs[1] + gs[2]);
+        Ts[2] = ns * 2 * gs[3];
+        double du = hypot(s->u[3 * a] - s->us[3 * a],
+                          s->u[3 * a + 1] - s->us[3 * a + 1]);
+        s->gamma[a] = s->type[a] == ISPH_FLUID ? drag(S, as, du) : 0;
+    }
+    /* the divergence of the stress (5.43), fluid and sediment */
+    const double reach = S->kernel->support * S->h;
+#pragma omp parallel for schedule(static)
+    for (int a = 0; a < s->n; a++) {
+        double af[2] = { 0, 0 }, asd[2] = { 0, 0 };
+        if (s->type[a] == ISPH_FLUID) {
+            double fa = 1 - s->alpha[a], sa = s->alpha[a];
+            for (int64_t k = s->nl.start[a]; k < s->nl.start[a + 1]; k++) {
+                int b = s->nl.j[k];
+                double r = s->nl.r[k];
+                if (b == a || !(r > 0) || r >= reach || !(s->V[b] > 0))
+                    continue;
+                double d = S->kernel->dw(r, S->h) / r;
+                double gw[2] = { d * (s->x[3 * a] - s->x[3 * b]),
+                                 d * (s->x[3 * a + 1] - s->x[3 * b + 1]) };
+                double fb = 1 - s->alpha[b], sb = s->alpha[b];
+                double lf = 1 + 0.5 * log(fb / fa);
+                /* D-09: no log factor where a fraction vanishes */
+                double ls = sa < 1e-6 || sb < 1e-6 ? 1 : 1 + 0.5 * log(sb / sa);
+                const double *Ta = s->Tf + 3 * a, *Tb = s->Tf + 3 * b;
+                const double *Sa = s->Ts + 3 * a, *Sb = s->Ts + 3 * b;
+                double V = s->V[b];
+                af[0] += V * lf * ((Ta[0] + Tb[0]) * gw[0] + (Ta[1] + Tb[1]) * gw[1]);
+                af[1] += V * lf * ((Ta[1] + Tb[1]) * gw[0] + (Ta[2] + Tb[2]) * gw[1]);
+                asd[0] += V * ls * ((Sa[0] + Sb[0]) * gw[0] + (Sa[1] + Sb[1]) * gw[1]);
+                asd[1] += V * ls * ((Sa[1] + Sb[1]) * gw[0] + (Sa[2] + Sb[2]) * gw[1]);
+            }
+        }
+        s->acc_f[2 * a] = af[0];
+        s->acc_f[2 * a + 1] = af[1];
+        s->acc_s[2 * a] = asd[0];
+        s->acc_s[2 * a + 1] = asd[1];
+    }
+}
+
+/* The pressure equation at r* (rows as in isph_solver.h). */
+static int assemble(struct isph_solver *s, double dt)
+{
+    const struct neighbour_list *nl = &s->nl;
+    const double rho = s->S.rho_f, reach = s->S.kernel->support * s->S.h;
+    struct csr_matrix *A = &s->A;
+    int n = s->n;
+    if (!A->rowptr || A->n < n) {
+        free(A->rowptr);
+        A->rowptr = sim_malloc((size_t)(n + 1) * sizeof *A->rowptr);
+        if (!A->rowptr)
+            return SIM_ERR_NOMEM;
+    }
+    A->n = n;
+    A->rowptr[0] = 0;
+    for (int a = 0; a < n; a++)
+        A->rowptr[a + 1] = A->rowptr[a] + 1 + (nl->start[a + 1] - nl->start[a]);
+    TRY(csr_reserve(A, &s->capA, A->rowptr[n]));
+    A->nnz = A->rowptr[n];
+    int bad = -1;
+#pragma omp parallel for schedule(dynamic, 64)
+    for (int a = 0; a < n; a++) {
+        int64_t e = A->rowptr[a], k0 = nl->start[a];
+        int m = (int)(nl->start[a + 1] - k0);
+        A->col[e] = a;
+        for (int k = 0; k < m; k++) {
+            A->col[e + 1 + k] = nl->j[k0 + k];
+            A->val[e + 1 + k] = 0;
+        }
+        if (!s->rows[a] || (s->type[a] == ISPH_FLUID && s->fs[a])) {
+            A->val[e] = 1; /* free surface, dry wall: p = 0 */
+            s->b[a] = 0;
+            continue;
+        }
+        if (s->type[a] == ISPH_FLUID) {
+            double l[m > 0 ? m : 1], d = 0, div[2];
+            isph_laplacian_row(&s->cl, a, l);
+            double g0[2], g1[2];
+            isph_gradient(&s->cl, s->ustar, 3, a, g0);
+            isph_gradient(&s->cl, s->ustar + 1, 3, a, g1);
+            div[0] = g0[0] + g1[1];
+            for (int k = 0; k < m; k++) {
+                A->val[e + 1 + k] = -l[k];
+                d += l[k];
+            }
+            A->val[e] = d;
+            double af = 1 - s->alpha[a];
+            div[1] = s->dalpha_f[a] / (af * dt);
+            s->b[a] = -(rho / dt) * (div[0] + div[1]);
+            continue;
+        }
+        /* a wet wall: n.grad p = (rho/dt) n.(u* - U), U = 0 (5.31) */
+        const double *L = s->L + 4 * a, *nn = s->normal + 3 * a;
+        double d = 0;
+        for (int k = 0; k < m; k++) {
+            int b = nl->j[k0 + k];
+            double r = nl->r[k0 + k];
+            if (b == a || !(r > 0) || r >= reach || !(s->V[b] > 0))
+                continue;
+            double dw = s->S.kernel->dw(r, s->S.h) / r;
+            double gw[2] = { dw * (s->x[3 * a] - s->x[3 * b]),
+                             dw * (s->x[3 * a + 1] - s->x[3 * b + 1]) };
+            double Lg[2] = { L[0] * gw[0] + L[1] * gw[1],
+                             L[2] * gw[0] + L[3] * gw[1] };
+            double v = s->V[b] * (nn[0] * Lg[0] + nn[1] * Lg[1]);
+            A->val[e + 1 + k] = v;
+            d -= v;
+        }
+        A->val[e] = d;
+        s->b[a] = rho / dt * (nn[0] * s->ustar[3 * a]
+                              + nn[1] * s->ustar[3 * a + 1]);
+        if (!(d > 0)) {
+#pragma omp critical
+            if (bad < 0 || a < bad)
+                bad = a;
+        }
+    }
+    if (bad >= 0)
+        return sim_error(SIM_ERR_NUMERIC, "ISPH wall particle %d (%g, %g): "
+                         "its Neumann row has a non-positive diagonal (its "
+                         "neighbours are not on its fluid side: check the "
+                         "normals)", bad, s->x[3 * bad], s->x[3 * bad + 1]);
+    return SIM_OK;
+}
+
+int isph_step(struct isph_solver *s, double dt)
+{
+    const struct isph_settings *S = &s->S;
+    const int n = s->n;
+    double t0 = app_wall_time();
+    if (s->t.steps > 0) {
+        TRY(build_list(s));
+        TRY(prepare(s));
+    }
+    /* 1-2. at r^n: gradients, stresses, drag; u_f*, r* */
+    gradients(s);
+    for (int a = 0; a < n; a++) {
+        double *us = s->ustar + 3 * a;
+        us[2] = 0;
+        if (s->type[a] != ISPH_FLUID) { /* walls: U + dt g (5.31) */
+            us[0] = dt * S->g[0];
+            us[1] = dt * S->g[1];
+            continue;
+        }
+        /* drag -F/(alpha_f rho_f), F = gamma alpha_s (u_f - u_s) */
+        double kf = s->gamma[a] * s->alpha[a]
+                  / ((1 - s->alpha[a]) * S->rho_f);
+        for (int q = 0; q < 2; q++) {
+            double u0 = s->u[3 * a + q], v0 = s->us[3 * a + q];
+            us[q] = u0 + dt * (s->acc_f[2 * a + q] + S->g[q]
+                               + kf * (v0 - u0));
+        }
+    }
+    memcpy(s->x0, s->x, 3 * sizeof(double) * (size_t)n);
+    for (int a = 0; a < n; a++)
+        if (s->type[a] == ISPH_FLUID)
+            for (int q = 0; q < 2; q++)
+                s->x[3 * a + q] += dt * s->ustar[3 * a + q];
+    double t1 = app_wall_time();
+    s->t.explicit_ += t1 - t0;
+    /* 3. at r*: corrections, free surface, pressure */
+    TRY(build_list(s));
+    TRY(prepare(s));
+    for (int a = 0; a < n; a++) {
+        s->counts[a] = s->rows[a];
+        s->fs[a] = s->type[a] == ISPH_FLUID;
+    }
+    pop_surface_quadrant(&s->nl, s->x, 2.5 * S->dl, 0.4 * S->dl, s->fs,
+                         s->counts, s->fs);
+    s->n_surface = 0;
+    for (int a = 0; a < n; a++) {
+        s->fs[a] = s->fs[a] && s->type[a] == ISPH_FLUID;
+        s->n_surface += s->fs[a];
+    }
+    TRY(assemble(s, dt));
+    double t2 = app_wall_time();
+    TRY(linsolve_solve(s->ls, &s->A, s->b, s->p, &s->last));
+    s->t.ppe_iters += s->last.iters;
+    double t3 = app_wall_time();
+    s->t.ppe += t3 - t2;
+    /* 4-5. u_f^{n+1}, r^{n+1}; u_s^{n+1}, alpha_s^{n+1} */
+    long clipped = 0;
+#pragma omp parallel for schedule(static) reduction(+ : clipped)
+    for (int a = 0; a < n; a++) {
+        if (s->type[a] != ISPH_FLUID)
+            continue;
+        double gp[2], uf[2] = { s->u[3 * a], s->u[3 * a + 1] };
+        double *us = s->us + 3 * a, as = s->alpha[a];
+        isph_gradient(&s->cl, s->p, 1, a, gp);
+        const double *gs = s->gus + 4 * a, *ga = s->ga + 2 * a;
+        double rel[2] = { us[0] - uf[0], us[1] - uf[1] };
+        double ks = s->gamma[a] / S->rho_s; /* F/(alpha_s rho_s) = ks (u_f - u_s) */
+        for (int q = 0; q < 2; q++) {
+            s->u[3 * a + q] = s->ustar[3 * a + q] - dt / S->rho_f * gp[q];
+            double adv = rel[0] * gs[2 * q] + rel[1] * gs[2 * q + 1];
+            us[q] += dt * (-gp[q] / S->rho_s + s->acc_s[2 * a + q] + S->g[q]
+                           - ks * rel[q] - adv);
+        }
+        double na = as + dt * (-as * s->divu[a]
+                               - (rel[0] * ga[0] + rel[1] * ga[1]));
+        if (na < 0 || na > S->alpha_sm) {
+            clipped++;
+            na = fmin(fmax(na, 0), S->alpha_sm);
+        }
+        s->alpha[a] = na;
+        s->dalpha_f[a] = as - na; /* alpha_f^(n+1) - alpha_f^n (5.24) */
+        for (int q = 0; q < 2; q++)
+            s->x[3 * a + q] = s->x0[3 * a + q] + dt * s->u[3 * a + q];
+    }
+    s->n_clipped += clipped;
+    for (int a = 0; a < n; a++)
+        if (s->type[a] == ISPH_FLUID
+            && s->V[a] > 0) /* V of the new fraction (5.34) */
+            s->V[a] = s->m[a] / ((1 - s->alpha[a]) * S->rho_f);
+    for (int a = 0; a < 3 * n; a++)
+        if (!isfinite(s->u[a]) || !isfinite(s->us[a]))
+            return sim_error(SIM_ERR_NUMERIC, "ISPH particle %d: non-finite "
+                             "velocity after the step", a / 3);
+    s->t.correction += app_wall_time() - t3;
+    s->t.steps++;
+    return SIM_OK;
+}
+
+void isph_solver_free(struct isph_solver *s)
+{
+    store_free(&s->st);
+    free(s->x0), free(s->ustar), free(s->m), free(s->L), free(s->c);
+    free(s->Sv), free(s->b), free(s->dalpha_f), free(s->gu);
+    free(s->gus), free(s->ga), free(s->divu), free(s->Tf), free(s->Ts);
+    free(s->acc_f), free(s->acc_s), free(s->gamma), free(s->counts);
+    free(s->rows);
+    cells_free(&s->grid);
+    neighbour_free(&s->nl);
+    csr_free(&s->A);
+    linsolve_free(s->ls);
+    memset(s, 0, sizeof *s);
+}

@@ -1,0 +1,102 @@
+/*
+ * isph_solver.h — the two-phase ISPH step of isphSediment (Pan 2022
+ * thesis ch. 5, Fig. 5.2; doc/theory.md S.3): one set of particles moves
+ * with the water and carries the sediment volume fraction alpha_s and the
+ * sediment velocity u_s. One step (D.7 of the thesis's algorithm):
+ *
+ *   1. at r^n: corrections (isph.h), grad u_f, grad u_s, grad alpha_s,
+ *      div u_f; |S|, nu_t = (C dl)^2 |S| (1 - alpha_s/alpha_sm)^n (5.9),
+ *      T_k = (nu_k^0 + nu_t)(grad u_k + grad u_k^T) (5.5); drag gamma
+ *      (5.12)-(5.13)
+ *   2. u_f* = u_f + dt [div-term (5.43) + g - gamma alpha_s (u_f - u_s)/
+ *      (alpha_f rho_f)] (5.19);  r* = r + u_f* dt (5.20)
+ *   3. at r*: corrections, free-surface flags (5.32)-(5.33), the pressure
+ *      equation (5.24)/(5.44): (dt/rho_f) lap p = div u_f* + (alpha_f^n -
+ *      alpha_f^(n-1))/(alpha_f^n dt); walls n.grad p = (rho_f/dt)
+ *      n.(u_f* - U) (5.31); surface p = 0
+ *   4. u_f^(n+1) = u_f* - (dt/rho_f) grad p (5.25); r^(n+1) = r^n +
+ *      u_f^(n+1) dt (5.26)
+ *   5. u_s^(n+1) (5.27), alpha_s^(n+1) (5.28) with (5.41), clamped to
+ *      [0, alpha_sm]; V = m_f/(alpha_f rho_f) (5.34)
+ *
+ * Wall particles (type 1) are one layer on the walls, at rest (u = U = 0),
+ * pure fluid (alpha_s = 0); a wall particle with no water particle in its
+ * support is dry: p = 0 and V = 0, so it takes part in no sum.
+ */
+#ifndef MPSDEM_ISPH_ISPH_SOLVER_H
+#define MPSDEM_ISPH_ISPH_SOLVER_H
+
+#include <stdint.h>
+
+#include "isph/isph.h"
+#include "linsolve/linsolve.h"
+#include "particles/cells.h"
+#include "particles/neighbour.h"
+#include "particles/store.h"
+
+struct dict;
+
+enum { ISPH_FLUID = 0, ISPH_WALL = 1 };
+
+struct isph_settings {
+    double rho_f, nu_f, g[3];
+    double rho_s, d_s, alpha_sm; /* sediment (constant/sedimentProperties) */
+    double dl, h;                /* spacing, smoothing length [m]          */
+    const struct isph_kernel *kernel;
+    int norm;                    /* enum isph_lap_norm (S0-03)             */
+    double cs, les_n;            /* Smagorinsky C (0.1), exponent n (S0-04) */
+};
+
+
+
+struct isph_timers {
+    long steps, ppe_iters;
+    double neighbours, explicit_, ppe, correction;
+};
+
+struct isph_solver {
+    struct isph_settings S;
+    struct store st;
+    int n;
+    /* registered fields */
+    double *x, *u, *p, *normal, *alpha, *us, *nut;
+    int32_t *type, *patch;
+    int64_t *id;
+    uint8_t *fs;
+    /* work */
+    double *x0, *ustar, *V, *m, *L, *c, *Sv, *b;
+    double *dalpha_f;            /* alpha_f^n - alpha_f^(n-1) (5.24)       */
+    double *gu, *gus, *ga, *divu, *Tf, *Ts, *acc_f, *acc_s, *gamma;
+    uint8_t *counts, *rows;
+    struct cell_grid grid;
+    struct neighbour_list nl;
+    struct isph_cloud cl;
+    struct csr_matrix A;
+    size_t capA;
+    struct linsolve *ls;
+    struct linsolve_stats last;
+    struct isph_timers t;
+    long n_surface, n_clipped;
+};
+
+/* constant/transportProperties (rho, nu), constant/sedimentProperties
+ * (rho, d, alphaMax), system/isphSchemes (kernel, smoothingLength,
+ * laplacian, lesCoefficient, lesExponent). */
+int isph_settings_read(const struct dict *transport,
+                       const struct dict *sediment, const struct dict *schemes,
+                       struct isph_settings *S);
+extern const struct model_choice isph_solver_choices[];
+
+/* Register the fields in s->st and size it for n particles. */
+int isph_fields_alloc(struct isph_solver *s, int n);
+
+/* Take the settings and the linear solver (owned from now on); the store
+ * must hold the particles with x, u, p, normal, type, patch, alpha, us. */
+int isph_solver_init(struct isph_solver *s, const struct isph_settings *S,
+                     struct linsolve *ls);
+
+int isph_step(struct isph_solver *s, double dt);
+
+void isph_solver_free(struct isph_solver *s);
+
+#endif

@@ -1,0 +1,63 @@
+#!/usr/bin/env bash
+# isph.sh — isphSediment on its tutorial (tutorials/isphSediment; doc/
+# theory.md S, checks E.4; ~40 s):
+#   neutral buoyancy, cases 1a (alpha_s = 0.1) and 1b (alpha_s = 0.5 (1 -
+#     y)), dl = 0.02 m, 1.5 s (E4-04): pressure L2 against rho g (H - y)
+#     < 1 % (measured 2.5e-4 / 2.2e-4), largest displacement < 0.1 dl
+#     (0.031 / 0.031 dl), |alpha_s - alpha_s0| off the free surface < 1e-4
+#     (3.0e-5 / 8.2e-5)
+#   bad input: an unknown kernel (file:line, did you mean), a smoothing
+#     length whose support misses the free-surface detector's reach, no
+#     constant/sedimentProperties, dummy particles, alpha_s above alphaMax:
+#     non-zero exit, a message naming the cause, no time directory written
+NAME=isph; . "$(dirname "$0")/lib/case.sh"
+need_bins isphSediment genParticles vtuInfo dictTool
+export MPSDEM_DIR="$ROOT"
+NB="$ROOT/tutorials/isphSediment/neutralBuoyancy"
+setcase() { rm -rf "$TMP/$1"; cp -r "$2" "$TMP/$1"; c="$TMP/$1"; }
+set_entry() { "$ROOT/bin/dictTool" -case "$c" "$1" -set "$2=$3" >/dev/null; }
+
+for k in 1a 1b; do
+    setcase "neutral$k" "$NB"
+    if out=$(cd "$c" && ./Allrun "$k" 2>&1); then
+        r=$(echo "$out" | tail -n 1)
+        echo "    $k: $r"
+        echo "$r" | awk '{ gsub(/[(),]/, " "); for (k = 1; k <= NF; k++) { if ($k == "L2") l2 = $(k + 1)
+                             if ($k == "dl") d = $(k - 1); if ($k == "surface") a = $(k + 1) } }
+                         END { exit !(l2 != "" && l2 < 0.01 && d < 0.1 && a < 1e-4) }' \
+            && pass "isph_neutral_$k" || fail "isph_neutral_$k" "$r"
+    else
+        fail "isph_neutral_$k" "$(echo "$out" | tail -n 2 | tr '\n' ' ')"
+    fi
+done
+
+# --- bad input ---
+bad() { # name expected-regexp
+    local out
+    out=$(cd "$c" && "$ROOT/bin/isphSediment" 2>&1); local rc=$?
+    local extra=$(cd "$c" && ls -d [0-9]* | grep -v '^0$' | tr '\n' ' ')
+    if [ $rc -ne 0 ] && echo "$out" | grep -qE "$2" && [ -z "$extra" ]; then
+        pass "isph_bad_$1"
+    else
+        fail "isph_bad_$1" "rc $rc, time dirs '$extra', message: $(echo "$out" | grep -A1 FATAL | tail -1)"
+    fi
+}
+setcase bad "$NB"
+sed -i 's/^dp .*/dp 0.1;/' "$c/system/particleDict"
+(cd "$c" && "$ROOT/bin/genParticles" > log.genParticles 2>&1)
+set_entry system/isphSchemes kernel wendland
+bad kernel "system/isphSchemes:[0-9]+.*wendland.*did you mean 'wendlandC2'"
+set_entry system/isphSchemes kernel wendlandC2
+set_entry system/isphSchemes smoothingLength 1.2
+bad smoothingLength "system/isphSchemes:[0-9]+.*smoothingLength.*2.5 dl"
+set_entry system/isphSchemes smoothingLength 1.3
+mv "$c/constant/sedimentProperties" "$c/constant/sediment.off"
+bad sedimentProperties "constant/sedimentProperties"
+mv "$c/constant/sediment.off" "$c/constant/sedimentProperties"
+set_entry system/isphSolution alphaSediment/value 0.7
+bad alphaMax "alpha.sediment 0.7 outside \[0, alphaMax = 0.606\]"
+set_entry system/isphSolution alphaSediment/value 0.1
+set_entry system/particleDict wallLayers 2
+(cd "$c" && "$ROOT/bin/genParticles" > log.genParticles 2>&1)
+bad dummy "0/fluid.vtu: particle [0-9]+ has type 2 .*wallLayers 1"
+exit $((fails > 0))
