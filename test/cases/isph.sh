@@ -5,7 +5,11 @@
 #     y)), dl = 0.02 m, 1.5 s (E4-04): pressure L2 against rho g (H - y)
 #     < 1 % (measured 2.5e-4 / 2.2e-4), largest displacement < 0.1 dl
 #     (0.031 / 0.031 dl), |alpha_s - alpha_s0| off the free surface < 1e-4
-#     (3.0e-5 / 8.2e-5)
+#     (3.0e-5 / 8.2e-5); the free-surface detector (E4-10) flags the top
+#     row alone, 49 particles, at every step
+#   the raised-cosine start profile (5.51) of the settling test: alpha_s
+#     of the water particles at y = 0.1, 0.2, 0.3, 0.5 m is 0, 5e-4, 1e-3,
+#     0 (1e-9) after one step
 #   bad input: an unknown kernel (file:line, did you mean), a smoothing
 #     length whose support misses the free-surface detector's reach, no
 #     constant/sedimentProperties, dummy particles, alpha_s above alphaMax:
@@ -22,14 +26,38 @@ for k in 1a 1b; do
     if out=$(cd "$c" && ./Allrun "$k" 2>&1); then
         r=$(echo "$out" | tail -n 1)
         echo "    $k: $r"
+        log="$c/log.isphSediment"; [ "$k" = 1a ] || log="$c/1b/log.isphSediment"
+        surf=$(awk '/^Time/ { for (k = 1; k <= NF; k++) if ($k == "surface") print $(k + 1) }' "$log" | sort -u | tr '\n' ' ')
         echo "$r" | awk '{ gsub(/[(),]/, " "); for (k = 1; k <= NF; k++) { if ($k == "L2") l2 = $(k + 1)
                              if ($k == "dl") d = $(k - 1); if ($k == "surface") a = $(k + 1) } }
                          END { exit !(l2 != "" && l2 < 0.01 && d < 0.1 && a < 1e-4) }' \
             && pass "isph_neutral_$k" || fail "isph_neutral_$k" "$r"
+        [ "$surf" = "49 " ] && pass "isph_surface_$k" || fail "isph_surface_$k" "surface counts over the run: $surf(49 expected)"
     else
         fail "isph_neutral_$k" "$(echo "$out" | tail -n 2 | tr '\n' ' ')"
     fi
 done
+
+# --- the raised-cosine start profile (5.51) ---
+setcase cosine "$NB"
+set_entry system/controlDict endTime 0.001
+set_entry system/controlDict writeInterval 0.001
+"$ROOT/bin/dictTool" -case "$c" system/isphSolution -new -set alphaSediment/type=cosine \
+    -set alphaSediment/peak=1e-3 -set "alphaSediment/direction=(0 1 0)" -set alphaSediment/from=0.1 \
+    -set alphaSediment/to=0.5 > /dev/null
+sed -i '/^ *value /d; /^ *gradient /d; /^ *origin /d' "$c/system/isphSolution"
+if (cd "$c" && "$ROOT/bin/genParticles" > log.genParticles 2>&1 && "$ROOT/bin/isphSediment" > log.isphSediment 2>&1); then
+    r=$("$ROOT/bin/vtuInfo" -dump "$c/0.001/fluid.vtu" | awk '/^# x/ { for (k = 2; k <= NF; k++) c[$k] = k - 1; next }
+        $1 ~ /^[-0-9.]/ && $c["type"] == 0 && $1 > 0.49 && $1 < 0.51 { for (q = 1; q <= 4; q++) { y = q == 1 ? 0.1 : q == 2 ? 0.2 : q == 3 ? 0.3 : 0.5
+              w = q == 1 ? 0 : q == 2 ? 5e-4 : q == 3 ? 1e-3 : 0
+              d = $2 - y; if (d < 0) d = -d; if (d < 0.005) { e = $c["alpha.sediment"] - w; if (e < 0) e = -e; if (e > m) m = e; n++ } } }
+        END { printf "%d %g", n, m }')
+    set -- $r
+    [ "$1" = 4 ] && awk -v e="$2" 'BEGIN { exit !(e < 1e-9) }' && pass isph_cosine_profile \
+        || fail isph_cosine_profile "rows found $1, largest error $2"
+else
+    fail isph_cosine_profile "$(grep -h -A1 FATAL "$c"/log.* | tail -1)"
+fi
 
 # --- bad input ---
 bad() { # name expected-regexp

@@ -61,25 +61,62 @@ static int read_patches(struct sediment *f)
                           f->patch_names, &f->npatches);
 }
 
-/* alphaSediment { value a0; gradient (gx gy 0); origin (x0 y0 0); }:
- * alpha_s = a0 + g.(x - x0) on the water particles, clipped at 0 (the
- * thesis's cases 1a, 1b: uniform and linear). */
+/* alphaSediment { type linear; value a0; gradient (gx gy 0); origin (x0
+ * y0 0); }: alpha_s = a0 + g.(x - x0) (the thesis's cases 1a, 1b), or
+ * { type cosine; peak a0; direction (0 1 0); from s0; to s1; }: with s =
+ * x.direction, alpha_s = (a0/2) [1 + cos(2 pi ((s - s0)/(s1 - s0) -
+ * 0.5))] on [s0, s1], 0 outside (eq. 5.51 of the settling test); on the
+ * water particles, clipped at 0. */
+static const struct model_head prof_linear = { "linear",
+    "value + gradient.(x - origin), Pan 2022 sect. 5.3.1" };
+static const struct model_head prof_cosine = { "cosine",
+    "a raised cosine, Pan 2022 eq. 5.51" };
+static const struct model_head *const profile_table[] = { &prof_linear,
+                                                          &prof_cosine,
+                                                          NULL };
+
 static int initial_alpha(struct sediment *f)
 {
     struct isph_solver *s = &f->s;
     const struct dict *d;
-    double a0, g[3] = { 0, 0, 0 }, o[3] = { 0, 0, 0 };
+    int type;
+    double a0, g[3] = { 0, 0, 0 }, o[3] = { 0, 0, 0 }, s0 = 0, s1 = 1;
     TRY(dict_find_dict(f->solution, "alphaSediment", &d));
     if (!d)
         return SIM_OK; /* clear water */
-    TRY(dict_get_scalar(d, "value", &a0));
-    TRY(dict_get_vector_or(d, "gradient", 3, g, g));
-    TRY(dict_get_vector_or(d, "origin", 3, o, o));
+    TRY(model_select_index(d, "type", "initial sediment profile",
+                           (const void *const *)profile_table, "linear",
+                           &type));
+    if (type == 0) {
+        TRY(dict_get_scalar(d, "value", &a0));
+        TRY(dict_get_vector_or(d, "gradient", 3, g, g));
+        TRY(dict_get_vector_or(d, "origin", 3, o, o));
+    } else {
+        TRY(dict_get_scalar(d, "peak", &a0));
+        TRY(dict_get_vector(d, "direction", 3, g));
+        TRY(dict_get_scalar(d, "from", &s0));
+        TRY(dict_get_scalar(d, "to", &s1));
+        double len = hypot(g[0], g[1]);
+        if (!(len > 0))
+            return dict_error(d, "direction", SIM_ERR_DICT, "direction "
+                              "must not be zero");
+        if (!(s1 > s0))
+            return dict_error(d, "to", SIM_ERR_DICT, "to must exceed from");
+        g[0] /= len;
+        g[1] /= len;
+    }
     for (int i = 0; i < s->n; i++) {
         if (s->type[i] != ISPH_FLUID)
             continue;
-        double a = a0 + g[0] * (s->x[3 * i] - o[0])
-                 + g[1] * (s->x[3 * i + 1] - o[1]);
+        const double *x = s->x + 3 * i;
+        double a;
+        if (type == 0) {
+            a = a0 + g[0] * (x[0] - o[0]) + g[1] * (x[1] - o[1]);
+        } else {
+            double sx = g[0] * x[0] + g[1] * x[1];
+            a = sx < s0 || sx > s1 ? 0
+              : a0 / 2 * (1 + cos(2 * M_PI * ((sx - s0) / (s1 - s0) - 0.5)));
+        }
         s->alpha[i] = fmax(a, 0);
     }
     return SIM_OK;
@@ -240,9 +277,16 @@ static void cleanup(struct solver *sv)
     dict_free(f->patches);
 }
 
+static const struct model_choice profile_choices[] = {
+    { "system/isphSolution", "alphaSediment/type",
+      (const void *const *)profile_table },
+    { NULL, NULL, NULL },
+};
+
 static void list_models(void)
 {
     model_choices_print(isph_solver_choices, NULL, NULL);
+    model_choices_print(profile_choices, NULL, NULL);
     model_choices_print(linsolve_choices, "system/isphSolution", "PPE/");
 }
 
