@@ -284,3 +284,28 @@ int solver_main(const struct solver_ops *ops, struct solver *sv, int argc,
     }
     return finish(sv);
 }
+
+int solver_wall_cloud_check(const char *path, const char *noun, int n,
+                            const double *x, const int32_t *type,
+                            const double *normal)
+{
+    for (int i = 0; i < n; i++) {
+        if (type[i] == 2)
+            return sim_error(SIM_ERR_INPUT, "%s: %s %d is a dummy particle "
+                             "(type 2): this solver has one layer of wall "
+                             "particles on the wall (system/particleDict: "
+                             "wallLayers 1, origin on the tank's corner)",
+                             path, noun, i);
+        if (type[i] != 0 && type[i] != 1)
+            return sim_error(SIM_ERR_INPUT, "%s: %s %d has type %d (0 "
+                             "fluid, 1 wall)", path, noun, i, type[i]);
+        if (x[3 * i + 2] != 0)
+            return sim_error(SIM_ERR_INPUT, "%s: %s %d has z = %g (2-D)",
+                             path, noun, i, x[3 * i + 2]);
+        const double *nn = normal + 3 * i;
+        if (type[i] == 1 && fabs(hypot(nn[0], nn[1]) - 1) > 1e-6)
+            return sim_error(SIM_ERR_INPUT, "%s: wall %s %d has no unit "
+                             "normal in the x-y plane", path, noun, i);
+    }
+    return SIM_OK;
+}

@@ -43,6 +43,7 @@
 #define MPSDEM_SOLVER_SOLVER_H
 
 #include <stddef.h>
+#include <stdint.h>
 
 #include "core/app.h"
 #include "core/time.h"
@@ -138,6 +139,15 @@ int solver_main(const struct solver_ops *ops, struct solver *sv, int argc,
 /* Warn about the unused keys of d once set-up is done (after
  * controlDict's), in the order of the calls. */
 int solver_check_unused(struct solver *sv, const struct dict *d);
+
+/* The start cloud of a 2-D solver with one layer of wall particles on the
+ * walls (mlpgFluid's nodes, isphSediment's particles; genParticles with
+ * `wallLayers 1` and `origin` on the tank's corner): every particle of
+ * type 0 (fluid) or 1 (wall), z = 0, walls with a unit normal in the x-y
+ * plane. `noun` names a particle in the message ("node", "particle"). */
+int solver_wall_cloud_check(const char *path, const char *noun, int n,
+                            const double *x, const int32_t *type,
+                            const double *normal);
 
 /* The clouds into <t>/ (prefix "") and the .pvd, or into <prefix><t>/
  * ("failed.": a state to inspect, not to restart from, not in the .pvd).

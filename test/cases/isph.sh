@@ -87,5 +87,5 @@ bad alphaMax "alpha.sediment 0.7 outside \[0, alphaMax = 0.606\]"
 set_entry system/isphSolution alphaSediment/value 0.1
 set_entry system/particleDict wallLayers 2
 (cd "$c" && "$ROOT/bin/genParticles" > log.genParticles 2>&1)
-bad dummy "0/fluid.vtu: particle [0-9]+ has type 2 .*wallLayers 1"
+bad dummy "0/fluid.vtu: particle [0-9]+ is a dummy particle .*wallLayers 1"
 exit $((fails > 0))

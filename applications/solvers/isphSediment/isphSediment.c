@@ -154,21 +154,10 @@ static int copy_cloud(struct sediment *f, const struct vtu_cloud *c,
         memcpy(s->alpha, al->data, sizeof *s->alpha * n);
     if (vo)
         memcpy(s->V, vo->data, sizeof *s->V * n);
-    for (int i = 0; i < n; i++) {
+    for (int i = 0; i < n; i++)
         s->id[i] = id ? ((const int64_t *)id->data)[i] : i;
-        if (s->type[i] != ISPH_FLUID && s->type[i] != ISPH_WALL)
-            return sim_error(SIM_ERR_INPUT, "%s: particle %d has type %d (0 "
-                             "fluid, 1 wall; ISPH has one layer of wall "
-                             "particles: system/particleDict wallLayers 1)",
-                             path, i, s->type[i]);
-        if (s->x[3 * i + 2] != 0)
-            return sim_error(SIM_ERR_INPUT, "%s: particle %d has z = %g "
-                             "(2-D)", path, i, s->x[3 * i + 2]);
-        const double *nn = s->normal + 3 * i;
-        if (s->type[i] == ISPH_WALL && fabs(hypot(nn[0], nn[1]) - 1) > 1e-6)
-            return sim_error(SIM_ERR_INPUT, "%s: wall particle %d has no unit "
-                             "normal in the x-y plane", path, i);
-    }
+    TRY(solver_wall_cloud_check(path, "particle", n, s->x, s->type,
+                                s->normal));
     return al ? SIM_OK : initial_alpha(f);
 }
 

@@ -83,25 +83,8 @@ static int copy_cloud(struct fluid *f, const struct vtu_cloud *c,
     memcpy(s->patch, pa->data, sizeof *s->patch * n);
     for (int i = 0; i < n; i++)
         s->id[i] = id ? ((const int64_t *)id->data)[i] : i;
-    for (int i = 0; i < n; i++) {
-        if (s->type[i] == 2)
-            return sim_error(SIM_ERR_INPUT, "%s: node %d is a dummy particle "
-                             "(type 2): MLPG_R has one layer of wall nodes on "
-                             "the wall (system/particleDict: wallLayers 1, "
-                             "origin on the tank's corner)", path, i);
-        if (s->type[i] != MLPG_FLUID && s->type[i] != MLPG_WALL)
-            return sim_error(SIM_ERR_INPUT, "%s: node %d has type %d (0 "
-                             "fluid, 1 wall)", path, i, s->type[i]);
-        if (s->x[3 * i + 2] != 0)
-            return sim_error(SIM_ERR_INPUT, "%s: node %d has z = %g (2-D)",
-                             path, i, s->x[3 * i + 2]);
-        const double *nn = s->normal + 3 * i;
-        if (s->type[i] == MLPG_WALL
-            && fabs(hypot(nn[0], nn[1]) - 1) > 1e-6)
-            return sim_error(SIM_ERR_INPUT, "%s: wall node %d has no unit "
-                             "normal in the x-y plane", path, i);
-    }
-    return SIM_OK;
+    return solver_wall_cloud_check(path, "node", n, s->x, s->type,
+                                   s->normal);
 }
 
 /* walls { <name> { patch P; min (..); max (..); velocity (..); } } or
