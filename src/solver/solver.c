@@ -309,3 +309,20 @@ int solver_wall_cloud_check(const char *path, const char *noun, int n,
     }
     return SIM_OK;
 }
+
+int solver_read_patches_2d(struct solver *sv, struct dict **patches,
+                           double *dp, const char **names, int max, int *n)
+{
+    long dim;
+    TRY(app_read_dict(&sv->app, "constant/particlePatches", patches));
+    TRY(dict_get_label(*patches, "dimension", &dim));
+    if (dim != 2)
+        return dict_error(*patches, "dimension", SIM_ERR_DICT, "%s is 2-D: "
+                          "dimension must be 2", sv->ops->name);
+    TRY(dict_get_scalar(*patches, "dp", dp));
+    if (!(*dp > 0))
+        return dict_error(*patches, "dp", SIM_ERR_DICT, "dp must be > 0");
+    dict_mark_used(*patches, "types");
+    dict_mark_used(*patches, "wallLayers");
+    return dict_get_words(*patches, "patches", max, names, n);
+}

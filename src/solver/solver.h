@@ -140,6 +140,12 @@ int solver_main(const struct solver_ops *ops, struct solver *sv, int argc,
  * controlDict's), in the order of the calls. */
 int solver_check_unused(struct solver *sv, const struct dict *d);
 
+/* constant/particlePatches of a 2-D solver (genParticles): dimension 2
+ * (else an error naming the program), the spacing dp > 0, the patch names
+ * (at most max; they point into *patches, which the caller frees). */
+int solver_read_patches_2d(struct solver *sv, struct dict **patches,
+                           double *dp, const char **names, int max, int *n);
+
 /* The start cloud of a 2-D solver with one layer of wall particles on the
  * walls (mlpgFluid's nodes, isphSediment's particles; genParticles with
  * `wallLayers 1` and `origin` on the tank's corner): every particle of

@@ -44,19 +44,8 @@ struct fluid {
 
 static int read_patches(struct fluid *f)
 {
-    long dim;
-    TRY(app_read_dict(&f->sv.app, "constant/particlePatches", &f->patches));
-    TRY(dict_get_label(f->patches, "dimension", &dim));
-    if (dim != 2)
-        return dict_error(f->patches, "dimension", SIM_ERR_DICT,
-                          "mlpgFluid is 2-D: dimension must be 2");
-    TRY(dict_get_scalar(f->patches, "dp", &f->dp));
-    if (!(f->dp > 0))
-        return dict_error(f->patches, "dp", SIM_ERR_DICT, "dp must be > 0");
-    dict_mark_used(f->patches, "types");
-    dict_mark_used(f->patches, "wallLayers");
-    return dict_get_words(f->patches, "patches", MLPG_MAX_PATCHES,
-                          f->patch_names, &f->npatches);
+    return solver_read_patches_2d(&f->sv, &f->patches, &f->dp, f->patch_names,
+                                  MLPG_MAX_PATCHES, &f->npatches);
 }
 
 static int copy_cloud(struct fluid *f, const struct vtu_cloud *c,
