@@ -21,7 +21,7 @@
 #   wavemaker (the tutorial, the first 6 s): free surface at t = 6 s
 #     against the linear theory (validation/compare.sh, waves fitted over
 #     1-6 m, where they are developed): amplitude within 10 % (measured
-#     +2.6 %), wavelength within 5 % (-0.7 %), phase within T/10 = 0.138 s
+#     +2.5 %), wavelength within 5 % (-0.7 %), phase within T/10 = 0.138 s
 #     (0.005 s), RMS over 1-25 m < 2e-3 m; mean water level within 0.1 dl
 #     = 0.004 m of the displaced volume's (1e-4)
 #   cylinder (the tutorial: 24 surface nodes, inlet, outlet), Re 40, 1 s
