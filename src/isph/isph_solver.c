@@ -143,7 +143,7 @@ int isph_solver_init(struct isph_solver *s, const struct isph_settings *S,
         || !ALLOC(dalpha_f, 1) || !ALLOC(gu, 4) || !ALLOC(gus, 4)
         || !ALLOC(ga, 2) || !ALLOC(divu, 1) || !ALLOC(Tf, 3) || !ALLOC(Ts, 3)
         || !ALLOC(acc_f, 2) || !ALLOC(acc_s, 2) || !ALLOC(gamma, 1)
-        || !ALLOC(counts, 1) || !ALLOC(rows, 1))
+        || !ALLOC(rows, 1))
         return SIM_ERR_NOMEM;
 #undef ALLOC
     for (int i = 0; i < s->n; i++) {
@@ -394,12 +394,11 @@ int isph_step(struct isph_solver *s, double dt)
     /* 3. at r*: corrections, free surface, pressure */
     TRY(build_list(s));
     TRY(prepare(s));
-    for (int a = 0; a < n; a++) {
-        s->counts[a] = s->rows[a];
+    for (int a = 0; a < n; a++)
         s->fs[a] = s->type[a] == ISPH_FLUID;
-    }
+    /* water and wet walls count as neighbours */
     pop_surface_quadrant(&s->nl, s->x, 2.5 * S->dl, 0.4 * S->dl, s->fs,
-                         s->counts, s->fs);
+                         s->rows, s->fs);
     s->n_surface = 0;
     for (int a = 0; a < n; a++) {
         s->fs[a] = s->fs[a] && s->type[a] == ISPH_FLUID;
@@ -460,8 +459,7 @@ void isph_solver_free(struct isph_solver *s)
     free(s->x0), free(s->ustar), free(s->m), free(s->L), free(s->c);
     free(s->Sv), free(s->b), free(s->dalpha_f), free(s->gu);
     free(s->gus), free(s->ga), free(s->divu), free(s->Tf), free(s->Ts);
-    free(s->acc_f), free(s->acc_s), free(s->gamma), free(s->counts);
-    free(s->rows);
+    free(s->acc_f), free(s->acc_s), free(s->gamma), free(s->rows);
     cells_free(&s->grid);
     neighbour_free(&s->nl);
     csr_free(&s->A);

@@ -67,7 +67,7 @@ struct isph_solver {
     double *x0, *ustar, *V, *m, *L, *c, *Sv, *b;
     double *dalpha_f;            /* alpha_f^n - alpha_f^(n-1) (5.24)       */
     double *gu, *gus, *ga, *divu, *Tf, *Ts, *acc_f, *acc_s, *gamma;
-    uint8_t *counts, *rows;
+    uint8_t *rows;               /* 1: water, wet wall (isph_cloud.active)   */
     struct cell_grid grid;
     struct neighbour_list nl;
     struct isph_cloud cl;
