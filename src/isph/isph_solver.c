@@ -436,10 +436,13 @@ int isph_step(struct isph_solver *s, double dt)
         }
         s->alpha[a] = na;
         s->dalpha_f[a] = as - na; /* alpha_f^(n+1) - alpha_f^n (5.24) */
-        for (int q = 0; q < 2; q++)
-            s->x[3 * a + q] = s->x0[3 * a + q] + dt * s->u[3 * a + q];
     }
     s->n_clipped += clipped;
+    /* r^(n+1) once every gradient at r* is taken (5.26) */
+    for (int a = 0; a < n; a++)
+        if (s->type[a] == ISPH_FLUID)
+            for (int q = 0; q < 2; q++)
+                s->x[3 * a + q] = s->x0[3 * a + q] + dt * s->u[3 * a + q];
     for (int a = 0; a < n; a++)
         if (s->type[a] == ISPH_FLUID
             && s->V[a] > 0) /* V of the new fraction (5.34) */

@@ -3,10 +3,14 @@
 # theory.md S, checks E.4; ~40 s):
 #   neutral buoyancy, cases 1a (alpha_s = 0.1) and 1b (alpha_s = 0.5 (1 -
 #     y)), dl = 0.02 m, 1.5 s (E4-04): pressure L2 against rho g (H - y)
-#     < 1 % (measured 2.5e-4 / 2.2e-4), largest displacement < 0.1 dl
-#     (0.031 / 0.031 dl), |alpha_s - alpha_s0| off the free surface < 1e-4
-#     (3.0e-5 / 8.2e-5); the free-surface detector (E4-10) flags the top
-#     row alone, 49 particles, at every step
+#     < 1 % (measured 2e-12 / 8e-13: hydrostatics is exact), largest
+#     displacement < 0.1 dl (1e-11 dl), |alpha_s - alpha_s0| off the free
+#     surface < 1e-4 (1e-13); the free-surface detector (E4-10) flags the
+#     top row alone, 49 particles, at every step
+#   settling (tutorial settling at dl = 0.02 m, 5 s; E4-06, E4-07): peak
+#     of the row-mean alpha_s within dl/2 of (5.50)'s 0.2206 m (measured
+#     -0.0008 m), L_inf <= 10 % of alpha_s0 (3.2 %), volume within 1 %
+#     (+0.32 %)
 #   the raised-cosine start profile (5.51) of the settling test: alpha_s
 #     of the water particles at y = 0.1, 0.2, 0.3, 0.5 m is 0, 5e-4, 1e-3,
 #     0 (1e-9) after one step
@@ -37,6 +41,18 @@ for k in 1a 1b; do
         fail "isph_neutral_$k" "$(echo "$out" | tail -n 2 | tr '\n' ' ')"
     fi
 done
+
+# --- settling (tutorials/isphSediment/settling at dl = 0.02 m) ---
+setcase settling "$ROOT/tutorials/isphSediment/settling"
+rm -f "$c"/validation/profile_dl*.dat
+if out=$(cd "$c" && ./Allrun 0.02 2>&1); then
+    echo "$out" | tail -n 3 | sed 's/^/    /'
+    echo "$out" | awk '/^peak/ { d = $13; if (d < 0) d = -d } /^Linf/ { l = $2 } /^volume/ { v = $(NF - 1); if (v < 0) v = -v }
+                       END { exit !(d != "" && d <= 0.01 && l != "" && l <= 0.1 && v != "" && v < 1) }' \
+        && pass isph_settling || fail isph_settling "$(echo "$out" | tail -n 3 | tr '\n' ' ')"
+else
+    fail isph_settling "$(echo "$out" | tail -n 2 | tr '\n' ' ')"
+fi
 
 # --- the raised-cosine start profile (5.51) ---
 setcase cosine "$NB"
