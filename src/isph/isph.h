@@ -65,6 +65,12 @@ struct isph_cloud {
  * independent neighbours in the support). */
 int isph_corrections(struct isph_cloud *c);
 
+/* The kernel gradient grad_a W_ab of the pair (a, b) at distance r > 0
+ * and dx = x_b - x_a (the uncorrected one of the stress divergence 5.43;
+ * the corrections below are built on it). */
+void isph_kernel_gradient(const struct isph_cloud *c, int a, int b,
+                          double r, double dx[2], double gw[2]);
+
 /* grad f of particle a (5.35), f of particle b at f[stride b]. */
 void isph_gradient(const struct isph_cloud *c, const double *f, int stride,
                    int a, double g[2]);

@@ -9,9 +9,11 @@
 #include "core/app.h"
 #include "core/dict.h"
 #include "core/error.h"
+#include "coupling/drag/drag.h"
 #include "isph/isph_solver.h"
 #include "linsolve/csr.h"
 #include "particles/operators/surface_quadrant.h"
+#include "particles/operators/wet_walls.h"
 
 static const int DIM_RHO[7] = { 1, -3, 0, 0, 0, 0, 0 };
 static const int DIM_NU[7] = { 0, 2, -1, 0, 0, 0, 0 };
@@ -92,6 +94,12 @@ int isph_fields_alloc(struct isph_solver *s, int n)
     return SIM_OK;
 }
 
+/* V = m_f/(alpha_f rho_f) (5.34). */
+static double volume(const struct isph_solver *s, int i)
+{
+    return s->m[i] / ((1 - s->alpha[i]) * s->S.rho_f);
+}
+
 static int build_list(struct isph_solver *s)
 {
     double t0 = app_wall_time();
@@ -106,28 +114,15 @@ static int build_list(struct isph_solver *s)
 }
 
 /* V (5.34), dry walls (V = 0, inactive), corrections at the current
- * positions. A wall particle is wet when a water particle within its
- * support is not lower than itself by more than dl/2 (doc/theory.md
- * S0-06, as mlpgFluid's M0-23): above the water its support holds only
- * water below it and its Neumann row loses its diagonal. */
+ * positions. A wall particle is wet by mlpgFluid's rule (M0-23,
+ * pop_wet_walls; doc/theory.md S0-06): above the water its support holds
+ * only water below it and its Neumann row loses its diagonal. */
 static int prepare(struct isph_solver *s)
 {
-    const struct neighbour_list *nl = &s->nl;
-    const double reach = s->S.kernel->support * s->S.h, *g = s->S.g;
-    const double gn = hypot(g[0], g[1]);
-    const double up[2] = { gn > 0 ? -g[0] / gn : 0, gn > 0 ? -g[1] / gn : 0 };
-    for (int i = 0; i < s->n; i++) {
-        int wet = s->type[i] == ISPH_FLUID;
-        for (int64_t k = nl->start[i]; k < nl->start[i + 1] && !wet; k++) {
-            int j = nl->j[k];
-            double h = up[0] * (s->x[3 * j] - s->x[3 * i])
-                     + up[1] * (s->x[3 * j + 1] - s->x[3 * i + 1]);
-            wet = s->type[j] == ISPH_FLUID && nl->r[k] < reach
-               && h >= -0.5 * s->S.dl;
-        }
-        s->rows[i] = (uint8_t)wet;
-        s->V[i] = wet ? s->m[i] / ((1 - s->alpha[i]) * s->S.rho_f) : 0;
-    }
+    pop_wet_walls(&s->nl, s->x, s->type, s->normal, s->S.g, 1,
+                  s->S.kernel->support * s->S.h, s->S.dl, s->rows);
+    for (int i = 0; i < s->n; i++)
+        s->V[i] = s->rows[i] ? volume(s, i) : 0;
     return isph_corrections(&s->cl);
 }
 
@@ -159,7 +154,7 @@ int isph_solver_init(struct isph_solver *s, const struct isph_settings *S,
         /* m_f from the volume the particle stands for (dl^2 at the start) */
         double V = s->V[i] > 0 ? s->V[i] : S->dl * S->dl;
         s->m[i] = V * (1 - s->alpha[i]) * S->rho_f;
-        s->dalpha_f[i] = 0; /* the first step: alpha_f^-1 = alpha_f^0 */
+        /* dalpha_f = 0 (calloc): the first step has alpha_f^-1 = alpha_f^0 */
     }
     s->cl = (struct isph_cloud){ .n = s->n, .x = s->x, .V = s->V,
                                  .nl = &s->nl, .kernel = S->kernel,
@@ -168,19 +163,6 @@ int isph_solver_init(struct isph_solver *s, const struct isph_settings *S,
                                  .S = s->Sv };
     TRY(build_list(s));
     return prepare(s);
-}
-
-/* Drag coefficient gamma (5.12)-(5.13) with the Re -> 0 guard. */
-static double drag(const struct isph_settings *S, double as, double du)
-{
-    double af = 1 - as, nu = S->nu_f, d = S->d_s;
-    if (as > 0.2) /* Ergun */
-        return 150 * as * S->rho_f * nu / (af * d * d)
-             + 1.75 * S->rho_f * du / d;
-    double re = af * du * d / nu;
-    double cd_du = re < 1000 ? 24 * nu * (1 + 0.15 * pow(re, 0.687)) / (af * d)
-                             : 0.44 * du;
-    return 0.75 * cd_du * S->rho_f / d * pow(af, -1.65);
 }
 
 /* nu_s^0 (5.7), capped at 0.95 alpha_sm (D-02). */
@@ -234,7 +216,11 @@ static void gradients(struct isph_solver *s)
         Ts[2] = ns * 2 * gs[3];
         double du = hypot(s->u[3 * a] - s->us[3 * a],
                           s->u[3 * a + 1] - s->us[3 * a + 1]);
-        s->gamma[a] = s->type[a] == ISPH_FLUID ? drag(S, as, du) : 0;
+        /* (5.12)-(5.13) are the Ergun / Wen-Yu law with its switch at
+         * alpha_f = 0.8, K of src/coupling/drag (Re -> 0 guarded there) */
+        const struct drag_fluid fl = { S->rho_f, S->rho_f * S->nu_f };
+        s->gamma[a] = s->type[a] == ISPH_FLUID
+                    ? drag_ergun_wen_yu.coeff(&fl, 1 - as, du, S->d_s) : 0;
     }
     /* the divergence of the stress (5.43), fluid and sediment */
     const double reach = S->kernel->support * S->h;
@@ -248,9 +234,8 @@ static void gradients(struct isph_solver *s)
                 double r = s->nl.r[k];
                 if (b == a || !(r > 0) || r >= reach || !(s->V[b] > 0))
                     continue;
-                double d = S->kernel->dw(r, S->h) / r;
-                double gw[2] = { d * (s->x[3 * a] - s->x[3 * b]),
-                                 d * (s->x[3 * a + 1] - s->x[3 * b + 1]) };
+                double dx[2], gw[2];
+                isph_kernel_gradient(&s->cl, a, b, r, dx, gw);
                 double fb = 1 - s->alpha[b], sb = s->alpha[b];
                 double lf = 1 + 0.5 * log(fb / fa);
                 /* D-09: no log factor where a fraction vanishes */
@@ -330,9 +315,8 @@ static int assemble(struct isph_solver *s, double dt)
             double r = nl->r[k0 + k];
             if (b == a || !(r > 0) || r >= reach || !(s->V[b] > 0))
                 continue;
-            double dw = s->S.kernel->dw(r, s->S.h) / r;
-            double gw[2] = { dw * (s->x[3 * a] - s->x[3 * b]),
-                             dw * (s->x[3 * a + 1] - s->x[3 * b + 1]) };
+            double dx[2], gw[2];
+            isph_kernel_gradient(&s->cl, a, b, r, dx, gw);
             double Lg[2] = { L[0] * gw[0] + L[1] * gw[1],
                              L[2] * gw[0] + L[3] * gw[1] };
             double v = s->V[b] * (nn[0] * Lg[0] + nn[1] * Lg[1]);
@@ -446,7 +430,7 @@ int isph_step(struct isph_solver *s, double dt)
     for (int a = 0; a < n; a++)
         if (s->type[a] == ISPH_FLUID
             && s->V[a] > 0) /* V of the new fraction (5.34) */
-            s->V[a] = s->m[a] / ((1 - s->alpha[a]) * S->rho_f);
+            s->V[a] = volume(s, a);
     for (int a = 0; a < 3 * n; a++)
         if (!isfinite(s->u[a]) || !isfinite(s->us[a]))
             return sim_error(SIM_ERR_NUMERIC, "ISPH particle %d: non-finite "

@@ -9,10 +9,8 @@
 #include "isph/isph.h"
 #include "particles/neighbour.h"
 
-/* The kernel gradient grad_a W_ab of the pair (a, b) at distance r, and
- * dx = x_b - x_a. */
-static void pair(const struct isph_cloud *c, int a, int b, double r,
-                 double dx[2], double gw[2])
+void isph_kernel_gradient(const struct isph_cloud *c, int a, int b,
+                          double r, double dx[2], double gw[2])
 {
     dx[0] = c->x[3 * b] - c->x[3 * a];
     dx[1] = c->x[3 * b + 1] - c->x[3 * a + 1];
@@ -36,7 +34,7 @@ int isph_corrections(struct isph_cloud *c)
             double r = nl->r[k], dx[2], gw[2];
             if (b == a || !(r > 0) || r >= reach)
                 continue;
-            pair(c, a, b, r, dx, gw);
+            isph_kernel_gradient(c, a, b, r, dx, gw);
             double V = c->V[b], F = (dx[0] * gw[0] + dx[1] * gw[1]) / (r * r);
             for (int p = 0; p < 2; p++) {
                 S[p] += V * gw[p];
@@ -85,7 +83,7 @@ void isph_gradient(const struct isph_cloud *c, const double *f, int stride,
         double r = nl->r[k], dx[2], gw[2];
         if (b == a || !(r > 0) || r >= reach)
             continue;
-        pair(c, a, b, r, dx, gw);
+        isph_kernel_gradient(c, a, b, r, dx, gw);
         double df = c->V[b] * (f[stride * b] - f[stride * a]);
         s[0] += df * gw[0];
         s[1] += df * gw[1];
@@ -106,7 +104,7 @@ void isph_laplacian_row(const struct isph_cloud *c, int a, double *l)
         l[k - nl->start[a]] = 0;
         if (b == a || !(r > 0) || r >= reach)
             continue;
-        pair(c, a, b, r, dx, gw);
+        isph_kernel_gradient(c, a, b, r, dx, gw);
         double F = (dx[0] * gw[0] + dx[1] * gw[1]) / (r * r);
         double Lg[2] = { L[0] * gw[0] + L[1] * gw[1],
                          L[2] * gw[0] + L[3] * gw[1] };

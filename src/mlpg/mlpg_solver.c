@@ -21,6 +21,7 @@
 #include "mlpg/mlpg_solver.h"
 #include "particles/operators/operators.h"
 #include "particles/operators/surface_quadrant.h"
+#include "particles/operators/wet_walls.h"
 
 #define PI 3.141592653589793
 
@@ -289,25 +290,13 @@ static int dirichlet_nodes(struct mlpg_solver *s)
     const struct neighbour_list *nl = &s->nl;
     const double *g = s->S.g, gn = hypot(g[0], g[1]);
     const double up[2] = { gn > 0 ? -g[0] / gn : 0, gn > 0 ? -g[1] / gn : 0 };
-    for (int i = 0; i < s->n; i++) {
-        if (s->type[i] != MLPG_WALL)
-            continue;
-        /* wet: water within the MLS support; with a free surface and
-         * gravity not all of it lower than the node by more than half a
-         * spacing, unless the wall faces down (a roof) */
-        const double *ni = s->nin + 3 * i;
-        int height = s->S.free_surface && gn > 0
-                  && up[0] * ni[0] + up[1] * ni[1] > -0.5;
-        int wet = 0;
-        for (int64_t k = nl->start[i]; k < nl->start[i + 1] && !wet; k++) {
-            int j = nl->j[k];
-            double h = up[0] * (s->x[3 * j] - s->x[3 * i])
-                     + up[1] * (s->x[3 * j + 1] - s->x[3 * i + 1]);
-            wet = s->type[j] == MLPG_FLUID && nl->r[k] < s->c.rs
-               && (!height || h >= -0.5 * s->S.dl);
-        }
-        s->dirichlet[i] = s->exclude[i] = !wet;
-    }
+    /* wet: water within the MLS support; with a free surface and gravity
+     * not all of it lower than the node by more than half a spacing,
+     * unless the wall faces down (a roof) */
+    pop_wet_walls(nl, s->x, s->type, s->normal, g, s->S.free_surface,
+                  s->c.rs, s->S.dl, s->exclude);
+    for (int i = 0; i < s->n; i++)
+        s->dirichlet[i] = s->exclude[i] = !s->exclude[i];
     uint8_t *given = s->dirichlet;
     /* a wet wall node whose row cannot be made (the MLS support of a point
      * of its half disc holds only its own wall: it stands above the

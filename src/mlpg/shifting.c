@@ -41,22 +41,11 @@ void mlpg_shift(struct mlpg_solver *s)
         if (s->type[i] == MLPG_FLUID) {
             pop_concentration_gradient(&s->nl, s->x, count, mlpg_weight, rs,
                                        c, i, G, F);
-            for (int q = 0; q < 2; q++)
-                d[q] = -D * G[q];
-            double fm = hypot(F[0], F[1]);
             int near = s->surface[i];
             for (int64_t k = s->nl.start[i]; !near && k < s->nl.start[i + 1];
                  k++)
                 near = s->surface[s->nl.j[k]] && s->nl.r[k] < rs;
-            if (near && fm > 0) {
-                double dn = (d[0] * F[0] + d[1] * F[1]) / fm;
-                d[0] -= dn * F[0] / fm;
-                d[1] -= dn * F[1] / fm;
-            }
-            double m = hypot(d[0], d[1]);
-            if (m > cap)
-                for (int q = 0; q < 2; q++)
-                    d[q] *= cap / m;
+            pop_fickian_shift(G, F, D, near, cap, d);
         }
         for (int q = 0; q < 3; q++)
             dr[3 * i + q] = d[q];

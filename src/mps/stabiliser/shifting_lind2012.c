@@ -74,18 +74,7 @@ static int apply_shifting(struct mps_solver *s, double dt)
         double G[3], F[3], d[3] = { 0, 0, 0 };
         if (P->type[i] == MPS_FLUID && !(fixed && fixed[i] == 1)) {
             asymmetry(s, i, G, F);
-            for (int q = 0; q < 3; q++)
-                d[q] = -D * G[q];
-            double fm = sqrt(F[0] * F[0] + F[1] * F[1] + F[2] * F[2]);
-            if (near_surface(s, i) && fm > 0) {
-                double dn = (d[0] * F[0] + d[1] * F[1] + d[2] * F[2]) / fm;
-                for (int q = 0; q < 3; q++)
-                    d[q] -= dn * F[q] / fm;
-            }
-            double m = sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
-            if (m > cap)
-                for (int q = 0; q < 3; q++)
-                    d[q] *= cap / m;
+            pop_fickian_shift(G, F, D, near_surface(s, i), cap, d);
             if (P->dim == 2)
                 d[2] = 0;
         }

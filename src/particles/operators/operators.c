@@ -265,3 +265,20 @@ void pop_concentration_gradient(const struct neighbour_list *nl,
     for (int q = 0; q < 3; q++)
         G[q] *= c;
 }
+
+void pop_fickian_shift(const double G[3], const double F[3], double D,
+                       int tangential, double cap, double d[3])
+{
+    for (int q = 0; q < 3; q++)
+        d[q] = -D * G[q];
+    double fm = sqrt(F[0] * F[0] + F[1] * F[1] + F[2] * F[2]);
+    if (tangential && fm > 0) {
+        double dn = (d[0] * F[0] + d[1] * F[1] + d[2] * F[2]) / fm;
+        for (int q = 0; q < 3; q++)
+            d[q] -= dn * F[q] / fm;
+    }
+    double m = sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+    if (m > cap)
+        for (int q = 0; q < 3; q++)
+            d[q] *= cap / m;
+}

@@ -103,4 +103,13 @@ void pop_concentration_gradient(const struct neighbour_list *nl,
                                 pop_weight_fn *w, double re, double c, int i,
                                 double G[3], double F[3]);
 
+/* The Fickian shift of one particle (Lind et al. 2012 eqs. 20-24) from
+ * its concentration gradient G and surface vector F
+ * (pop_concentration_gradient): d = -D G; with `tangential` (a particle at
+ * or next to the free surface) and |F| > 0 only its part across
+ * n = -F/|F|; then capped at |d| <= cap. Shared by mpsFluid's `shifting
+ * lind2012` and mlpgFluid's. */
+void pop_fickian_shift(const double G[3], const double F[3], double D,
+                       int tangential, double cap, double d[3]);
+
 #endif
