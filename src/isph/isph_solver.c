@@ -25,9 +25,23 @@ static const struct model_head norm_it = { "inverseTrace",
     "2n/tr(Gamma), doc/theory.md S0-03" };
 static const struct model_head *const norm_table[] = { &norm_ti, &norm_it,
                                                        NULL };
+static const struct model_head flux_adv = { "advective",
+    "-(u_s - u_f).grad alpha_s, Pan 2022 eq. 5.41 as printed" };
+static const struct model_head flux_con = { "conservative",
+    "-div(alpha_s (u_s - u_f)), doc/theory.md S0-09" };
+static const struct model_head *const flux_table[] = { &flux_adv, &flux_con,
+                                                       NULL };
+static const struct model_head drag_ex = { "explicit",
+    "gamma (u_s - u_f)^n, Pan 2022 eqs. 5.19, 5.27" };
+static const struct model_head drag_si = { "semiImplicit",
+    "backward-Euler relative velocity, doc/theory.md S0-07" };
+static const struct model_head *const drag_step_table[] = { &drag_ex, &drag_si,
+                                                       NULL };
 const struct model_choice isph_solver_choices[] = {
     { "system/isphSchemes", "kernel", (const void *const *)isph_kernels },
     { "system/isphSchemes", "laplacian", (const void *const *)norm_table },
+    { "system/isphSchemes", "sedimentFlux", (const void *const *)flux_table },
+    { "system/isphSchemes", "drag", (const void *const *)drag_step_table },
     { NULL, NULL, NULL },
 };
 
@@ -58,7 +72,13 @@ int isph_settings_read(const struct dict *transport,
     TRY(dict_get_scalar_or(schemes, "lesCoefficient", 0.1, &S->cs));
     TRY(dict_range(schemes, "lesCoefficient", S->cs, 0, 1, 0));
     TRY(dict_get_scalar_or(schemes, "lesExponent", 1, &S->les_n));
-    return dict_range(schemes, "lesExponent", S->les_n, 0, 10, 0);
+    TRY(dict_range(schemes, "lesExponent", S->les_n, 0, 10, 0));
+    TRY(model_select_index(schemes, "sedimentFlux", "sediment flux",
+                           (const void *const *)flux_table, "advective",
+                           &S->flux));
+    return model_select_index(schemes, "drag", "drag integration",
+                              (const void *const *)drag_step_table, "explicit",
+                              &S->drag);
 }
 
 int isph_fields_alloc(struct isph_solver *s, int n)
@@ -136,7 +156,8 @@ int isph_solver_init(struct isph_solver *s, const struct isph_settings *S,
     if (!ALLOC(x0, 3) || !ALLOC(ustar, 3) || !ALLOC(m, 1) || !ALLOC(L, 4)
         || !ALLOC(c, 1) || !ALLOC(Sv, 2) || !ALLOC(b, 1)
         || !ALLOC(dalpha_f, 1) || !ALLOC(gu, 4) || !ALLOC(gus, 4)
-        || !ALLOC(ga, 2) || !ALLOC(divu, 1) || !ALLOC(Tf, 3) || !ALLOC(Ts, 3)
+        || !ALLOC(aflux, 1) || !ALLOC(aw, 3) || !ALLOC(gp, 2) || !ALLOC(w, 2)
+        || !ALLOC(divu, 1) || !ALLOC(Tf, 3) || !ALLOC(Ts, 3)
         || !ALLOC(acc_f, 2) || !ALLOC(acc_s, 2) || !ALLOC(gamma, 1)
         || !ALLOC(rows, 1))
         return SIM_ERR_NOMEM;
@@ -180,12 +201,17 @@ static void gradients(struct isph_solver *s)
 {
     const struct isph_settings *S = &s->S;
     const double les = (S->cs * S->dl) * (S->cs * S->dl);
+    for (int a = 0; a < s->n; a++)
+        for (int q = 0; q < 2; q++)
+            s->aw[3 * a + q] = s->alpha[a] * (s->us[3 * a + q]
+                                              - s->u[3 * a + q]);
 #pragma omp parallel for schedule(static)
     for (int a = 0; a < s->n; a++) {
         double *gu = s->gu + 4 * a, *gs = s->gus + 4 * a;
         memset(gu, 0, 4 * sizeof *gu);
         memset(gs, 0, 4 * sizeof *gs);
-        s->ga[2 * a] = s->ga[2 * a + 1] = s->divu[a] = 0;
+        s->aflux[a] = s->divu[a] = 0;
+        s->gp[2 * a] = s->gp[2 * a + 1] = 0;
         s->nut[a] = s->gamma[a] = 0;
         memset(s->Tf + 3 * a, 0, 3 * sizeof(double));
         memset(s->Ts + 3 * a, 0, 3 * sizeof(double));
@@ -195,7 +221,18 @@ static void gradients(struct isph_solver *s)
             isph_gradient(&s->cl, s->u + q, 3, a, gu + 2 * q);
             isph_gradient(&s->cl, s->us + q, 3, a, gs + 2 * q);
         }
-        isph_gradient(&s->cl, s->alpha, 1, a, s->ga + 2 * a);
+        double rel[2] = { s->us[3 * a] - s->u[3 * a],
+                          s->us[3 * a + 1] - s->u[3 * a + 1] }, g0[2], g1[2];
+        if (S->flux == ISPH_FLUX_ADVECTIVE) { /* rel . grad alpha_s */
+            isph_gradient(&s->cl, s->alpha, 1, a, g0);
+            s->aflux[a] = rel[0] * g0[0] + rel[1] * g0[1];
+        } else {                              /* div(alpha_s rel) */
+            isph_gradient(&s->cl, s->aw, 3, a, g0);
+            isph_gradient(&s->cl, s->aw + 1, 3, a, g1);
+            s->aflux[a] = g0[0] + g1[1];
+        }
+        if (S->drag == ISPH_DRAG_SEMI_IMPLICIT)
+            isph_gradient(&s->cl, s->p, 1, a, s->gp + 2 * a);
         s->divu[a] = gu[0] + gu[3];
         double as = s->alpha[a];
         double damp = pow(fmax(0, 1 - as / S->alpha_sm), S->les_n);
@@ -214,8 +251,7 @@ static void gradients(struct isph_solver *s)
         Ts[0] = ns * 2 * gs[0];
         Ts[1] = ns * (gs[1] + gs[2]);
         Ts[2] = ns * 2 * gs[3];
-        double du = hypot(s->u[3 * a] - s->us[3 * a],
-                          s->u[3 * a + 1] - s->us[3 * a + 1]);
+        double du = hypot(rel[0], rel[1]);
         /* (5.12)-(5.13) are the Ergun / Wen-Yu law with its switch at
          * alpha_f = 0.8, K of src/coupling/drag (Re -> 0 guarded there) */
         const struct drag_fluid fl = { S->rho_f, S->rho_f * S->nu_f };
@@ -362,11 +398,24 @@ int isph_step(struct isph_solver *s, double dt)
         /* drag -F/(alpha_f rho_f), F = gamma alpha_s (u_f - u_s) */
         double kf = s->gamma[a] * s->alpha[a]
                   / ((1 - s->alpha[a]) * S->rho_f);
-        for (int q = 0; q < 2; q++) {
-            double u0 = s->u[3 * a + q], v0 = s->us[3 * a + q];
-            us[q] = u0 + dt * (s->acc_f[2 * a + q] + S->g[q]
-                               + kf * (v0 - u0));
+        double ks = s->gamma[a] / S->rho_s, *w = s->w + 2 * a;
+        const double *gs = s->gus + 4 * a, *gp = s->gp + 2 * a;
+        for (int q = 0; q < 2; q++)
+            w[q] = s->us[3 * a + q] - s->u[3 * a + q];
+        if (S->drag == ISPH_DRAG_SEMI_IMPLICIT) {
+            double wq[2];
+            for (int q = 0; q < 2; q++) { /* a_s - a_f without the drag */
+                double af = s->acc_f[2 * a + q] - gp[q] / S->rho_f;
+                double as = s->acc_s[2 * a + q] - gp[q] / S->rho_s
+                          - (w[0] * gs[2 * q] + w[1] * gs[2 * q + 1]);
+                wq[q] = (w[q] + dt * (as - af)) / (1 + dt * (kf + ks));
+            }
+            w[0] = wq[0];
+            w[1] = wq[1];
         }
+        for (int q = 0; q < 2; q++)
+            us[q] = s->u[3 * a + q] + dt * (s->acc_f[2 * a + q] + S->g[q]
+                                            + kf * w[q]);
     }
     memcpy(s->x0, s->x, 3 * sizeof(double) * (size_t)n);
     for (int a = 0; a < n; a++)
@@ -403,17 +452,16 @@ int isph_step(struct isph_solver *s, double dt)
         double gp[2], uf[2] = { s->u[3 * a], s->u[3 * a + 1] };
         double *us = s->us + 3 * a, as = s->alpha[a];
         isph_gradient(&s->cl, s->p, 1, a, gp);
-        const double *gs = s->gus + 4 * a, *ga = s->ga + 2 * a;
+        const double *gs = s->gus + 4 * a, *w = s->w + 2 * a;
         double rel[2] = { us[0] - uf[0], us[1] - uf[1] };
         double ks = s->gamma[a] / S->rho_s; /* F/(alpha_s rho_s) = ks (u_f - u_s) */
         for (int q = 0; q < 2; q++) {
             s->u[3 * a + q] = s->ustar[3 * a + q] - dt / S->rho_f * gp[q];
             double adv = rel[0] * gs[2 * q] + rel[1] * gs[2 * q + 1];
             us[q] += dt * (-gp[q] / S->rho_s + s->acc_s[2 * a + q] + S->g[q]
-                           - ks * rel[q] - adv);
+                           - ks * w[q] - adv);
         }
-        double na = as + dt * (-as * s->divu[a]
-                               - (rel[0] * ga[0] + rel[1] * ga[1]));
+        double na = as + dt * (-as * s->divu[a] - s->aflux[a]);
         if (na < 0 || na > S->alpha_sm) {
             clipped++;
             na = fmin(fmax(na, 0), S->alpha_sm);
@@ -445,7 +493,8 @@ void isph_solver_free(struct isph_solver *s)
     store_free(&s->st);
     free(s->x0), free(s->ustar), free(s->m), free(s->L), free(s->c);
     free(s->Sv), free(s->b), free(s->dalpha_f), free(s->gu);
-    free(s->gus), free(s->ga), free(s->divu), free(s->Tf), free(s->Ts);
+    free(s->gus), free(s->aflux), free(s->aw), free(s->gp), free(s->w),
+        free(s->divu), free(s->Tf), free(s->Ts);
     free(s->acc_f), free(s->acc_s), free(s->gamma), free(s->rows);
     cells_free(&s->grid);
     neighbour_free(&s->nl);

@@ -16,8 +16,16 @@
  *      n.(u_f* - U) (5.31); surface p = 0
  *   4. u_f^(n+1) = u_f* - (dt/rho_f) grad p (5.25); r^(n+1) = r^n +
  *      u_f^(n+1) dt (5.26)
- *   5. u_s^(n+1) (5.27), alpha_s^(n+1) (5.28) with (5.41), clamped to
- *      [0, alpha_sm]; V = m_f/(alpha_f rho_f) (5.34)
+ *   5. u_s^(n+1) (5.27), alpha_s^(n+1) (5.28) with (5.41) (advective, as
+ *      printed) or div(alpha_s (u_s - u_f)) (conservative, S0-09),
+ *      clamped to [0, alpha_sm]; V = m_f/(alpha_f rho_f) (5.34)
+ *
+ * The drag in 2 and 5 acts on one relative velocity w = u_s - u_f, equal
+ * and opposite: w^n (explicit, as printed) or, semi-implicit (S0-07),
+ * w~ = (w^n + dt (a_s - a_f))/(1 + dt (k_f + k_s)) with the phases'
+ * other accelerations a (grad p^n at r^n for the pressure's) and k_f =
+ * gamma alpha_s/(alpha_f rho_f), k_s = gamma/rho_s: the backward-Euler
+ * relaxation of w, stable for any dt gamma and exact at terminal slip.
  *
  * Wall particles (type 1) are one layer on the walls, at rest (u = U = 0),
  * pure fluid (alpha_s = 0); a wall particle with no water particle in its
@@ -45,7 +53,12 @@ struct isph_settings {
     const struct isph_kernel *kernel;
     int norm;                    /* enum isph_lap_norm (S0-03)             */
     double cs, les_n;            /* Smagorinsky C (0.1), exponent n (S0-04) */
+    int flux;                    /* enum isph_flux (S0-09)                 */
+    int drag;                    /* enum isph_drag (S0-07)                 */
 };
+
+enum isph_flux { ISPH_FLUX_ADVECTIVE, ISPH_FLUX_CONSERVATIVE };
+enum isph_drag { ISPH_DRAG_EXPLICIT, ISPH_DRAG_SEMI_IMPLICIT };
 
 
 
@@ -66,7 +79,12 @@ struct isph_solver {
     /* work */
     double *x0, *ustar, *V, *m, *L, *c, *Sv, *b;
     double *dalpha_f;            /* alpha_f^n - alpha_f^(n-1) (5.24)       */
-    double *gu, *gus, *ga, *divu, *Tf, *Ts, *acc_f, *acc_s, *gamma;
+    double *aflux;               /* the sediment flux term of (5.28) at n  */
+    double *aw;                  /* alpha_s (u_s - u_f) at n, 3 per particle */
+    double *gp;                  /* grad p^n at r^n (semi-implicit drag)    */
+    double *w;                   /* the relative velocity u_s - u_f that the
+                                    drag acts on, 2 per particle (S0-07)   */
+    double *gu, *gus, *divu, *Tf, *Ts, *acc_f, *acc_s, *gamma;
     uint8_t *rows;               /* 1: water, wet wall (isph_cloud.active)   */
     struct cell_grid grid;
     struct neighbour_list nl;

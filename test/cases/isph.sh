@@ -6,14 +6,22 @@
 #     < 1 % (measured 2e-12 / 8e-13: hydrostatics is exact), largest
 #     displacement < 0.1 dl (1e-11 dl), |alpha_s - alpha_s0| off the free
 #     surface < 1e-4 (1e-13); the free-surface detector (E4-10) flags the
-#     top row alone, 49 particles, at every step
+#     top row alone, 49 particles, at every step; case 1b with d = 0.15
+#     mm (where the explicit drag blows up) and the semi-implicit drag
+#     (S0-07) likewise
 #   settling (tutorial settling at dl = 0.02 m, 5 s; E4-06, E4-07): peak
 #     of the row-mean alpha_s within dl/2 of (5.50)'s 0.2206 m (measured
 #     -0.0008 m), L_inf <= 10 % of alpha_s0 (3.2 %), volume within 1 %
-#     (+0.32 %)
+#     (+0.32 %), pressure L2 against the hydrostatic plus the suspended
+#     excess < 1 % (E4-08: 1.2e-4)
 #   the raised-cosine start profile (5.51) of the settling test: alpha_s
 #     of the water particles at y = 0.1, 0.2, 0.3, 0.5 m is 0, 5e-4, 1e-3,
 #     0 (1e-9) after one step
+#   terminal slip (E4-05): a suspension of alpha_s = 1e-5, d = 0.15,
+#     0.8, 1.3, 5 mm, rho_s = 2650, 0.4 s from rest: the mean |u_s - u_f|
+#     in the middle of the tank within 0.5 % of the thesis's omega_s
+#     (measured -0.09, -0.08, -0.07, -0.06 %), explicit and semi-implicit
+#     drag
 #   bad input: an unknown kernel (file:line, did you mean), a smoothing
 #     length whose support misses the free-surface detector's reach, no
 #     constant/sedimentProperties, dummy particles, alpha_s above alphaMax:
@@ -42,13 +50,31 @@ for k in 1a 1b; do
     fi
 done
 
+# --- case 1b with fine grains (d = 0.15 mm: dt gamma/rho_s = 6.4 at the
+# bottom, the explicit drag blows up in the second step) and the
+# semi-implicit drag (S0-07): still water stays still ---
+setcase neutral1b_fine "$NB"
+set_entry constant/sedimentProperties d 0.15e-3
+set_entry system/isphSchemes drag semiImplicit
+if out=$(cd "$c" && ./Allrun 1b 2>&1); then
+    r=$(echo "$out" | tail -n 1)
+    echo "    1b, d = 0.15 mm, semiImplicit: $r"
+    echo "$r" | awk '{ gsub(/[(),]/, " "); for (k = 1; k <= NF; k++) { if ($k == "L2") l2 = $(k + 1)
+                         if ($k == "dl") d = $(k - 1); if ($k == "surface") a = $(k + 1) } }
+                     END { exit !(l2 != "" && l2 < 0.01 && d < 0.1 && a < 1e-4) }' \
+        && pass isph_neutral_1b_semiImplicit || fail isph_neutral_1b_semiImplicit "$r"
+else
+    fail isph_neutral_1b_semiImplicit "$(echo "$out" | tail -n 2 | tr '\n' ' ')"
+fi
+
 # --- settling (tutorials/isphSediment/settling at dl = 0.02 m) ---
 setcase settling "$ROOT/tutorials/isphSediment/settling"
 rm -f "$c"/validation/profile_dl*.dat
 if out=$(cd "$c" && ./Allrun 0.02 2>&1); then
-    echo "$out" | tail -n 3 | sed 's/^/    /'
+    echo "$out" | tail -n 4 | sed 's/^/    /'
     echo "$out" | awk '/^peak/ { d = $13; if (d < 0) d = -d } /^Linf/ { l = $2 } /^volume/ { v = $(NF - 1); if (v < 0) v = -v }
-                       END { exit !(d != "" && d <= 0.01 && l != "" && l <= 0.1 && v != "" && v < 1) }' \
+                       /^pressure L2/ { p = $3 }
+                       END { exit !(d != "" && d <= 0.01 && l != "" && l <= 0.1 && v != "" && v < 1 && p != "" && p < 0.01) }' \
         && pass isph_settling || fail isph_settling "$(echo "$out" | tail -n 3 | tr '\n' ' ')"
 else
     fail isph_settling "$(echo "$out" | tail -n 2 | tr '\n' ' ')"
@@ -74,6 +100,39 @@ if (cd "$c" && "$ROOT/bin/genParticles" > log.genParticles 2>&1 && "$ROOT/bin/is
 else
     fail isph_cosine_profile "$(grep -h -A1 FATAL "$c"/log.* | tail -1)"
 fi
+
+# --- E4-05: terminal slip of a dilute suspension (alpha_s = 1e-5) ---
+# rho_s = 2650, 0.4 s from rest at dl = 0.05 m; the mean |u_s - u_f| of
+# the water particles in the middle of the tank (x 0.33-0.67, y 0.43-0.67
+# m, far from the walls) against the thesis's omega_s (Table 1; 5.12-5.13
+# at alpha_f -> 1, g = 9.8)
+setcase slip "$NB"
+sed -i 's/^dp .*/dp 0.05;/' "$c/system/particleDict"
+set_entry constant/sedimentProperties rho 2650
+set_entry system/isphSolution alphaSediment/value 1e-5
+set_entry system/controlDict endTime 0.4
+set_entry system/controlDict writeInterval 0.4
+(cd "$c" && "$ROOT/bin/genParticles" > log.genParticles 2>&1)
+for drag in explicit semiImplicit; do
+set_entry system/isphSchemes drag "$drag"
+for p in "0.15e-3 0.01590" "0.8e-3 0.1260" "1.3e-3 0.1961" "5e-3 0.4952"; do
+    set -- $p
+    rm -rf "$c"/0.4 "$c"/log.isphSediment
+    set_entry constant/sedimentProperties d "$1"
+    if (cd "$c" && "$ROOT/bin/isphSediment" > log.isphSediment 2>&1); then
+        r=$("$ROOT/bin/vtuInfo" -dump "$c/0.4/fluid.vtu" | awk -v w="$2" '/^# x/ { for (k = 2; k <= NF; k++) c[$k] = k - 1; next }
+            $1 ~ /^[-0-9.]/ && $c["type"] == 0 && $1 > 0.325 && $1 < 0.675 && $2 > 0.425 && $2 < 0.675 {
+                s += sqrt(($c["U.sediment_0"] - $c["velocity_0"])^2 + ($c["U.sediment_1"] - $c["velocity_1"])^2); n++ }
+            END { if (n) printf "%d %.5g %.3f", n, s / n, 100 * (s / n - w) / w }')
+        set -- $1 $2 $r
+        echo "    E4-05 $drag, d = $1 m: slip $4 m/s over $3 particles, omega_s $2 m/s: $5 %"
+        awk -v n="$3" -v e="$5" 'BEGIN { exit !(n > 20 && e < 0.5 && e > -0.5) }' \
+            && pass "isph_terminal_slip_${drag}_$1" || fail "isph_terminal_slip_${drag}_$1" "slip $4 m/s, omega_s $2: $5 %"
+    else
+        fail "isph_terminal_slip_${drag}_$1" "$(grep -A1 FATAL "$c/log.isphSediment" | tail -1)"
+    fi
+done
+done
 
 # --- bad input ---
 bad() { # name expected-regexp

@@ -8,7 +8,13 @@
 # solved per row by fixed-point iteration). Prints the peak position of
 # both (E4-06: within DL/2), the largest error relative to alpha_s0
 # (E4-06: <= 10 %), the L2 error relative to the solution's, and the
-# sediment volume sum alpha_s V against its start (E4-07). Writes
+# sediment volume sum alpha_s V against its start (E4-07), and the
+# pressure of the water particles against the hydrostatic pressure plus
+# the suspended excess (E4-08): p = rho_f g (H - y) + (rho_s - rho_f) g
+# int_y^H alpha_s dz, H the top row, the integral over the row means
+# (rho_f = 1000, rho_s = 2650, g = 9.8): the L2 error relative to it, and
+# the mean pressure of the bottom row of water less rho_f g H against the
+# excess there. Writes
 # validation/profile_dl<DL>.dat (columns x2 alpha, the rows' means).
 set -e
 case=${1:?Usage: validation/profile.sh CASE [TIME [DL]]}
@@ -39,3 +45,13 @@ awk -v t="$t" -v dl="$dl" -v v0="$v0" -v v1="$v1" -v t0="$first" '
           printf "peak %.4f m at alpha %.3e (solution %.4f m, %.3e): off by %.4f m (dl/2 = %.4f)\n", yn, pn, ya, pa, yn - ya, dl / 2
           printf "Linf %.4f of alpha_s0; L2 %.4f\n", linf / 0.001, sqrt(s / sa)
           printf "volume %.6e at t = %s s, %.6e at %s s: change %+.3f %%\n", v0, t0, v1, t, 100 * (v1 / v0 - 1) }' "$out"
+# E4-08: the excess below each row is the trapezoid sum of the row means
+# from the top row down
+"$root/bin/vtuInfo" -dump "$case/$t/fluid.vtu" | awk -v dl="$dl" -v prof="$out" '
+    BEGIN { while ((getline l < prof) > 0) if (l !~ /^#/) { split(l, w, " "); r = int(w[1] / dl + 0.5); a[r] = w[2]; if (r > top) top = r }
+            for (r = top; r >= 0; r--) ex[r] = r == top ? 0 : ex[r + 1] + 0.5 * (a[r] + a[r + 1]) * dl }
+    /^# x/ { for (k = 2; k <= NF; k++) c[$k] = k - 1; next }
+    $1 ~ /^[-0-9.]/ && $c["type"] == 0 { r = int($2 / dl + 0.5); H = top * dl
+        pr = 1000 * 9.8 * (H - $2) + 1650 * 9.8 * ex[r]; e = $c["pressure"] - pr; s += e * e; sr += pr * pr
+        if (r < bot || !nb) { bot = r; nb = 0; pb = 0 } if (r == bot) { nb++; pb += $c["pressure"] - 1000 * 9.8 * (H - $2) } }
+    END { printf "pressure L2 %.3g against the hydrostatic plus the suspended excess; bottom row: p - rho_f g (H - y) %.3f Pa, excess %.3f Pa\n", sqrt(s / sr), pb / nb, 1650 * 9.8 * ex[bot] }'
