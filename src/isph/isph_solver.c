@@ -29,8 +29,10 @@ static const struct model_head flux_adv = { "advective",
     "-(u_s - u_f).grad alpha_s, Pan 2022 eq. 5.41 as printed" };
 static const struct model_head flux_con = { "conservative",
     "-div(alpha_s (u_s - u_f)), doc/theory.md S0-09" };
+static const struct model_head flux_up = { "upwind",
+    "pairwise upwind divergence, conservative and positive, doc S0-09" };
 static const struct model_head *const flux_table[] = { &flux_adv, &flux_con,
-                                                       NULL };
+                                                       &flux_up, NULL };
 static const struct model_head drag_ex = { "explicit",
     "gamma (u_s - u_f)^n, Pan 2022 eqs. 5.19, 5.27" };
 static const struct model_head drag_si = { "semiImplicit",
@@ -155,7 +157,8 @@ int isph_solver_init(struct isph_solver *s, const struct isph_settings *S,
 #define ALLOC(p, k) (s->p = sim_calloc((k) * n, sizeof *s->p))
     if (!ALLOC(x0, 3) || !ALLOC(ustar, 3) || !ALLOC(m, 1) || !ALLOC(L, 4)
         || !ALLOC(c, 1) || !ALLOC(Sv, 2) || !ALLOC(b, 1)
-        || !ALLOC(dalpha_f, 1) || !ALLOC(gu, 4) || !ALLOC(gus, 4)
+        || !ALLOC(dalpha_f, 1) || !ALLOC(anew, 1) || !ALLOC(gu, 4)
+        || !ALLOC(gus, 4)
         || !ALLOC(aflux, 1) || !ALLOC(aw, 3) || !ALLOC(gp, 2) || !ALLOC(w, 2)
         || !ALLOC(divu, 1) || !ALLOC(Tf, 3) || !ALLOC(Ts, 3)
         || !ALLOC(acc_f, 2) || !ALLOC(acc_s, 2) || !ALLOC(gamma, 1)
@@ -196,6 +199,65 @@ static double nu_s0(const struct isph_settings *S, double as)
     return 1.2 * S->rho_f / S->rho_s * S->nu_f / (q * q);
 }
 
+/* div(alpha_s w)_a, w = u_s - u_f, as the symmetric SPH divergence sum_b
+ * V_b 2 (alpha_s w)_ab . grad_a W_ab over the water neighbours, with the
+ * pair's flux (alpha_s w)_ab = alpha_s,up (w_a + w_b)/2 taken from the
+ * upstream particle (S0-09): the pair terms are antisymmetric (what a
+ * loses b gains: sum alpha_s V is kept while V is) and alpha_s stays >= 0
+ * while dt sum_b 2 V_b |w.grad W| <= 1. Walls take no sediment. */
+static double upwind_flux(const struct isph_solver *s, int a,
+                          const double wa[2])
+{
+    const double reach = s->S.kernel->support * s->S.h;
+    double sum = 0;
+    for (int64_t k = s->nl.start[a]; k < s->nl.start[a + 1]; k++) {
+        int b = s->nl.j[k];
+        double r = s->nl.r[k];
+        if (b == a || !(r > 0) || r >= reach || !(s->V[b] > 0)
+            || s->type[b] != ISPH_FLUID)
+            continue;
+        double dx[2], gw[2];
+        isph_kernel_gradient(&s->cl, a, b, r, dx, gw);
+        double f = 0.5 * ((wa[0] + s->us[3 * b] - s->u[3 * b]) * gw[0]
+                          + (wa[1] + s->us[3 * b + 1] - s->u[3 * b + 1])
+                            * gw[1]);
+        sum += 2 * s->V[b] * (f > 0 ? s->alpha[a] : s->alpha[b]) * f;
+    }
+    return sum;
+}
+
+/* alpha_s^(n+1) (5.28) into anew: every term is at level n. Returns the
+ * number of particles clipped to [0, alpha_sm]. */
+static long new_alpha(struct isph_solver *s, double dt)
+{
+    const struct isph_settings *S = &s->S;
+    long clipped = 0;
+#pragma omp parallel for schedule(static) reduction(+ : clipped)
+    for (int a = 0; a < s->n; a++) {
+        double as = s->alpha[a], na;
+        if (s->type[a] != ISPH_FLUID) {
+            s->anew[a] = as;
+            continue;
+        }
+        if (S->flux == ISPH_FLUX_UPWIND) {
+            /* the sediment volume sv = alpha_s V of a particle whose water
+             * volume m_f/rho_f is its own: d sv/dt = -V div(alpha_s w)
+             * (div u_f drops out); alpha_s = sv/(sv + m_f/rho_f) */
+            double sv = s->V[a] * (as - dt * s->aflux[a]);
+            double water = s->m[a] / S->rho_f;
+            na = sv / (fmax(sv, 0) + water); /* < 0: clipped, counted */
+        } else {
+            na = as + dt * (-as * s->divu[a] - s->aflux[a]);
+        }
+        if (na < 0 || na > S->alpha_sm) {
+            clipped++;
+            na = fmin(fmax(na, 0), S->alpha_sm);
+        }
+        s->anew[a] = na;
+    }
+    return clipped;
+}
+
 /* Step 1: gradients at r^n, stresses, drag. */
 static void gradients(struct isph_solver *s)
 {
@@ -226,10 +288,12 @@ static void gradients(struct isph_solver *s)
         if (S->flux == ISPH_FLUX_ADVECTIVE) { /* rel . grad alpha_s */
             isph_gradient(&s->cl, s->alpha, 1, a, g0);
             s->aflux[a] = rel[0] * g0[0] + rel[1] * g0[1];
-        } else {                              /* div(alpha_s rel) */
+        } else if (S->flux == ISPH_FLUX_CONSERVATIVE) { /* div(alpha_s rel) */
             isph_gradient(&s->cl, s->aw, 3, a, g0);
             isph_gradient(&s->cl, s->aw + 1, 3, a, g1);
             s->aflux[a] = g0[0] + g1[1];
+        } else if (s->type[a] == ISPH_FLUID) {
+            s->aflux[a] = upwind_flux(s, a, rel);
         }
         if (S->drag == ISPH_DRAG_SEMI_IMPLICIT)
             isph_gradient(&s->cl, s->p, 1, a, s->gp + 2 * a);
@@ -251,6 +315,10 @@ static void gradients(struct isph_solver *s)
         Ts[0] = ns * 2 * gs[0];
         Ts[1] = ns * (gs[1] + gs[2]);
         Ts[2] = ns * 2 * gs[3];
+        if (as < ISPH_ALPHA_TRACE) { /* no sediment phase (S0-11) */
+            memset(Ts, 0, 3 * sizeof *Ts);
+            memset(gs, 0, 4 * sizeof *gs);
+        }
         double du = hypot(rel[0], rel[1]);
         /* (5.12)-(5.13) are the Ergun / Wen-Yu law with its switch at
          * alpha_f = 0.8, K of src/coupling/drag (Re -> 0 guarded there) */
@@ -275,7 +343,8 @@ static void gradients(struct isph_solver *s)
                 double fb = 1 - s->alpha[b], sb = s->alpha[b];
                 double lf = 1 + 0.5 * log(fb / fa);
                 /* D-09: no log factor where a fraction vanishes */
-                double ls = sa < 1e-6 || sb < 1e-6 ? 1 : 1 + 0.5 * log(sb / sa);
+                double ls = sa < ISPH_ALPHA_TRACE || sb < ISPH_ALPHA_TRACE
+                          ? 1 : 1 + 0.5 * log(sb / sa);
                 const double *Ta = s->Tf + 3 * a, *Tb = s->Tf + 3 * b;
                 const double *Sa = s->Ts + 3 * a, *Sb = s->Ts + 3 * b;
                 double V = s->V[b];
@@ -287,8 +356,9 @@ static void gradients(struct isph_solver *s)
         }
         s->acc_f[2 * a] = af[0];
         s->acc_f[2 * a + 1] = af[1];
-        s->acc_s[2 * a] = asd[0];
-        s->acc_s[2 * a + 1] = asd[1];
+        int trace = s->alpha[a] < ISPH_ALPHA_TRACE;
+        s->acc_s[2 * a] = trace ? 0 : asd[0];
+        s->acc_s[2 * a + 1] = trace ? 0 : asd[1];
     }
 }
 
@@ -417,6 +487,7 @@ int isph_step(struct isph_solver *s, double dt)
             us[q] = s->u[3 * a + q] + dt * (s->acc_f[2 * a + q] + S->g[q]
                                             + kf * w[q]);
     }
+    s->n_clipped += new_alpha(s, dt);
     memcpy(s->x0, s->x, 3 * sizeof(double) * (size_t)n);
     for (int a = 0; a < n; a++)
         if (s->type[a] == ISPH_FLUID)
@@ -444,8 +515,7 @@ int isph_step(struct isph_solver *s, double dt)
     double t3 = app_wall_time();
     s->t.ppe += t3 - t2;
     /* 4-5. u_f^{n+1}, r^{n+1}; u_s^{n+1}, alpha_s^{n+1} */
-    long clipped = 0;
-#pragma omp parallel for schedule(static) reduction(+ : clipped)
+#pragma omp parallel for schedule(static)
     for (int a = 0; a < n; a++) {
         if (s->type[a] != ISPH_FLUID)
             continue;
@@ -461,15 +531,9 @@ int isph_step(struct isph_solver *s, double dt)
             us[q] += dt * (-gp[q] / S->rho_s + s->acc_s[2 * a + q] + S->g[q]
                            - ks * w[q] - adv);
         }
-        double na = as + dt * (-as * s->divu[a] - s->aflux[a]);
-        if (na < 0 || na > S->alpha_sm) {
-            clipped++;
-            na = fmin(fmax(na, 0), S->alpha_sm);
-        }
-        s->alpha[a] = na;
-        s->dalpha_f[a] = as - na; /* alpha_f^(n+1) - alpha_f^n (5.24) */
+        s->dalpha_f[a] = as - s->anew[a]; /* the next step's (5.24) */
+        s->alpha[a] = s->anew[a];
     }
-    s->n_clipped += clipped;
     /* r^(n+1) once every gradient at r* is taken (5.26) */
     for (int a = 0; a < n; a++)
         if (s->type[a] == ISPH_FLUID)
@@ -492,7 +556,7 @@ void isph_solver_free(struct isph_solver *s)
 {
     store_free(&s->st);
     free(s->x0), free(s->ustar), free(s->m), free(s->L), free(s->c);
-    free(s->Sv), free(s->b), free(s->dalpha_f), free(s->gu);
+    free(s->Sv), free(s->b), free(s->dalpha_f), free(s->anew), free(s->gu);
     free(s->gus), free(s->aflux), free(s->aw), free(s->gp), free(s->w),
         free(s->divu), free(s->Tf), free(s->Ts);
     free(s->acc_f), free(s->acc_s), free(s->gamma), free(s->rows);

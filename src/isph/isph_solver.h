@@ -17,7 +17,8 @@
  *   4. u_f^(n+1) = u_f* - (dt/rho_f) grad p (5.25); r^(n+1) = r^n +
  *      u_f^(n+1) dt (5.26)
  *   5. u_s^(n+1) (5.27), alpha_s^(n+1) (5.28) with (5.41) (advective, as
- *      printed) or div(alpha_s (u_s - u_f)) (conservative, S0-09),
+ *      printed) or div(alpha_s (u_s - u_f)) (conservative, or the
+ *      pairwise upwind form; S0-09),
  *      clamped to [0, alpha_sm]; V = m_f/(alpha_f rho_f) (5.34)
  *
  * The drag in 2 and 5 acts on one relative velocity w = u_s - u_f, equal
@@ -46,6 +47,11 @@ struct dict;
 
 enum { ISPH_FLUID = 0, ISPH_WALL = 1 };
 
+/* Below this alpha_s a particle carries no sediment phase: no log factor
+ * (D-09), no sediment stress and no advection of u_s (S0-11), so that
+ * u_s there is a single grain's (gravity, buoyancy, drag). */
+#define ISPH_ALPHA_TRACE 1e-6
+
 struct isph_settings {
     double rho_f, nu_f, g[3];
     double rho_s, d_s, alpha_sm; /* sediment (constant/sedimentProperties) */
@@ -57,7 +63,7 @@ struct isph_settings {
     int drag;                    /* enum isph_drag (S0-07)                 */
 };
 
-enum isph_flux { ISPH_FLUX_ADVECTIVE, ISPH_FLUX_CONSERVATIVE };
+enum isph_flux { ISPH_FLUX_ADVECTIVE, ISPH_FLUX_CONSERVATIVE, ISPH_FLUX_UPWIND };
 enum isph_drag { ISPH_DRAG_EXPLICIT, ISPH_DRAG_SEMI_IMPLICIT };
 
 
@@ -79,6 +85,7 @@ struct isph_solver {
     /* work */
     double *x0, *ustar, *V, *m, *L, *c, *Sv, *b;
     double *dalpha_f;            /* alpha_f^n - alpha_f^(n-1) (5.24)       */
+    double *anew;                /* alpha_s^(n+1) (5.28)                   */
     double *aflux;               /* the sediment flux term of (5.28) at n  */
     double *aw;                  /* alpha_s (u_s - u_f) at n, 3 per particle */
     double *gp;                  /* grad p^n at r^n (semi-implicit drag)    */

@@ -14,6 +14,10 @@
 #     -0.0008 m), L_inf <= 10 % of alpha_s0 (3.2 %), volume within 1 %
 #     (+0.32 %), pressure L2 against the hydrostatic plus the suspended
 #     excess < 1 % (E4-08: 1.2e-4)
+#   settling with `sedimentFlux upwind` (S0-09): sum alpha_s V from 1 to
+#     5 s within 1e-6 (exact to the printed digits), no alpha_s clipped
+#   the box start profile (S0-10): sum alpha_s V = value x area to 1e-9,
+#     with the box's edges inside particle cells; max below min refused
 #   the raised-cosine start profile (5.51) of the settling test: alpha_s
 #     of the water particles at y = 0.1, 0.2, 0.3, 0.5 m is 0, 5e-4, 1e-3,
 #     0 (1e-9) after one step
@@ -33,6 +37,16 @@ NB="$ROOT/tutorials/isphSediment/neutralBuoyancy"
 setcase() { rm -rf "$TMP/$1"; cp -r "$2" "$TMP/$1"; c="$TMP/$1"; }
 set_entry() { "$ROOT/bin/dictTool" -case "$c" "$1" -set "$2=$3" >/dev/null; }
 
+bad() { # name expected-regexp
+    local out
+    out=$(cd "$c" && "$ROOT/bin/isphSediment" 2>&1); local rc=$?
+    local extra=$(cd "$c" && ls -d [0-9]* | grep -v '^0$' | tr '\n' ' ')
+    if [ $rc -ne 0 ] && echo "$out" | grep -qE "$2" && [ -z "$extra" ]; then
+        pass "isph_bad_$1"
+    else
+        fail "isph_bad_$1" "rc $rc, time dirs '$extra', message: $(echo "$out" | grep -A1 FATAL | tail -1)"
+    fi
+}
 for k in 1a 1b; do
     setcase "neutral$k" "$NB"
     if out=$(cd "$c" && ./Allrun "$k" 2>&1); then
@@ -79,6 +93,42 @@ if out=$(cd "$c" && ./Allrun 0.02 2>&1); then
 else
     fail isph_settling "$(echo "$out" | tail -n 2 | tr '\n' ' ')"
 fi
+
+# --- settling with the upwind flux (S0-09): sediment volume to round-off,
+# alpha_s never clipped ---
+setcase settling_upwind "$ROOT/tutorials/isphSediment/settling"
+rm -f "$c"/validation/profile_dl*.dat
+set_entry system/isphSchemes sedimentFlux upwind
+if out=$(cd "$c" && ./Allrun 0.02 2>&1); then
+    echo "$out" | tail -n 4 | sed 's/^/    upwind: /'
+    clip=$(awk '/^Time/ { n = $NF } END { print n }' "$c/dl0.02/log.isphSediment")
+    echo "$out" | awk -v clip="$clip" '/^volume/ { split($0, f, " "); v0 = f[2]; v1 = f[8] }
+        END { e = (v1 - v0) / v0; if (e < 0) e = -e; exit !(v0 > 0 && e < 1e-6 && clip == 0) }' \
+        && pass isph_settling_upwind_volume || fail isph_settling_upwind_volume "$(echo "$out" | grep ^volume), clipped $clip"
+else
+    fail isph_settling_upwind_volume "$(echo "$out" | tail -n 2 | tr '\n' ' ')"
+fi
+
+# --- the box start profile (S0-10): sum alpha_s V = value x the box's area
+# (0.5 x 0.185 m x 0.27 m, its edges inside particle cells) ---
+setcase box "$NB"
+set_entry system/controlDict endTime 0.001
+set_entry system/controlDict writeInterval 0.001
+"$ROOT/bin/dictTool" -case "$c" system/isphSolution -new -set alphaSediment/type=box \
+    -set alphaSediment/value=0.5 -set "alphaSediment/min=(0.405 0.5 0)" -set "alphaSediment/max=(0.59 0.77 0)" > /dev/null
+sed -i '/^ *gradient /d; /^ *origin /d' "$c/system/isphSolution"
+if (cd "$c" && "$ROOT/bin/genParticles" > log.genParticles 2>&1 && "$ROOT/bin/isphSediment" > log.isphSediment 2>&1); then
+    v=$("$ROOT/bin/vtuInfo" -dump "$c/0.001/fluid.vtu" | awk '/^# x/ { for (k = 2; k <= NF; k++) c[$k] = k - 1; next }
+        $1 ~ /^[-0-9.]/ && $c["type"] == 0 { s += $c["alpha.sediment"] * $c["volume"] } END { printf "%.12g", s }')
+    echo "    box: sum alpha_s V = $v m^2 (0.024975)"
+    awk -v v="$v" 'BEGIN { e = v / 0.024975 - 1; if (e < 0) e = -e; exit !(e < 1e-9) }' \
+        && pass isph_box_profile || fail isph_box_profile "sum alpha_s V = $v, 0.024975 expected"
+else
+    fail isph_box_profile "$(grep -h -A1 FATAL "$c"/log.* | tail -1)"
+fi
+set_entry system/isphSolution "alphaSediment/max" "(0.3 0.77 0)"
+rm -rf "$c/0.001"
+bad box_bounds "system/isphSolution:[0-9]+.*max must exceed min"
 
 # --- the raised-cosine start profile (5.51) ---
 setcase cosine "$NB"
@@ -135,16 +185,6 @@ done
 done
 
 # --- bad input ---
-bad() { # name expected-regexp
-    local out
-    out=$(cd "$c" && "$ROOT/bin/isphSediment" 2>&1); local rc=$?
-    local extra=$(cd "$c" && ls -d [0-9]* | grep -v '^0$' | tr '\n' ' ')
-    if [ $rc -ne 0 ] && echo "$out" | grep -qE "$2" && [ -z "$extra" ]; then
-        pass "isph_bad_$1"
-    else
-        fail "isph_bad_$1" "rc $rc, time dirs '$extra', message: $(echo "$out" | grep -A1 FATAL | tail -1)"
-    fi
-}
 setcase bad "$NB"
 sed -i 's/^dp .*/dp 0.1;/' "$c/system/particleDict"
 (cd "$c" && "$ROOT/bin/genParticles" > log.genParticles 2>&1)

@@ -54,15 +54,27 @@ static int read_patches(struct sediment *f)
  * y0 0); }: alpha_s = a0 + g.(x - x0) (the thesis's cases 1a, 1b), or
  * { type cosine; peak a0; direction (0 1 0); from s0; to s1; }: with s =
  * x.direction, alpha_s = (a0/2) [1 + cos(2 pi ((s - s0)/(s1 - s0) -
- * 0.5))] on [s0, s1], 0 outside (eq. 5.51 of the settling test); on the
- * water particles, clipped at 0. */
+ * 0.5))] on [s0, s1], 0 outside (eq. 5.51 of the settling test), or
+ * { type box; value a0; min (x0 y0 0); max (x1 y1 0); }: a0 times the
+ * part of the particle's dl x dl cell inside the box (the sand block of
+ * the dumping tests: sum alpha_s V = a0 times the box's area, S0-10); on
+ * the water particles, clipped at 0. */
 static const struct model_head prof_linear = { "linear",
     "value + gradient.(x - origin), Pan 2022 sect. 5.3.1" };
 static const struct model_head prof_cosine = { "cosine",
     "a raised cosine, Pan 2022 eq. 5.51" };
+static const struct model_head prof_box = { "box",
+    "value times the particle's cell fraction in the box, doc S0-10" };
 static const struct model_head *const profile_table[] = { &prof_linear,
                                                           &prof_cosine,
-                                                          NULL };
+                                                          &prof_box, NULL };
+
+/* The fraction of [c - dl/2, c + dl/2] inside [lo, hi] (at most 1, so
+ * that round-off cannot lift a full cell above alphaMax). */
+static double overlap(double c, double dl, double lo, double hi)
+{
+    return fmin(1, fmax(0, fmin(c + dl / 2, hi) - fmax(c - dl / 2, lo)) / dl);
+}
 
 static int initial_alpha(struct sediment *f)
 {
@@ -80,6 +92,13 @@ static int initial_alpha(struct sediment *f)
         TRY(dict_get_scalar(d, "value", &a0));
         TRY(dict_get_vector_or(d, "gradient", 3, g, g));
         TRY(dict_get_vector_or(d, "origin", 3, o, o));
+    } else if (type == 2) {
+        TRY(dict_get_scalar(d, "value", &a0));
+        TRY(dict_get_vector(d, "min", 3, o));
+        TRY(dict_get_vector(d, "max", 3, g));
+        if (!(g[0] > o[0] && g[1] > o[1]))
+            return dict_error(d, "max", SIM_ERR_DICT, "max must exceed min "
+                              "in x and y");
     } else {
         TRY(dict_get_scalar(d, "peak", &a0));
         TRY(dict_get_vector(d, "direction", 3, g));
@@ -101,6 +120,9 @@ static int initial_alpha(struct sediment *f)
         double a;
         if (type == 0) {
             a = a0 + g[0] * (x[0] - o[0]) + g[1] * (x[1] - o[1]);
+        } else if (type == 2) {
+            a = a0 * overlap(x[0], f->dp, o[0], g[0])
+                   * overlap(x[1], f->dp, o[1], g[1]);
         } else {
             double sx = g[0] * x[0] + g[1] * x[1];
             a = sx < s0 || sx > s1 ? 0
