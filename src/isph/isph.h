@@ -58,11 +58,16 @@ struct isph_cloud {
     double *L;                /* 4: L_a, row-major                       */
     double *c;                /* c_a                                     */
     double *S;                /* 2: S_a                                  */
+    uint8_t *isolated;        /* NULL: a singular L_a is an error; else  */
+                              /* 1 where it is (L_a, c_a, S_a zero)      */
+    long n_isolated;          /* how many, with `isolated`               */
 };
 
-/* L_a, c_a and S_a of every (active) particle. SIM_ERR_NUMERIC naming
- * the particle when L_a^-1 or Gamma_a is singular (fewer than two
- * independent neighbours in the support). */
+/* L_a, c_a and S_a of every (active) particle. Where L_a^-1 or Gamma_a is
+ * singular (fewer than two independent neighbours in the support: a
+ * particle thrown off the free surface), SIM_ERR_NUMERIC naming the
+ * particle, or with `isolated` the particle is flagged and its operators
+ * are zero (no gradient, no Laplacian: it flies on its own). */
 int isph_corrections(struct isph_cloud *c);
 
 /* The kernel gradient grad_a W_ab of the pair (a, b) at distance r > 0

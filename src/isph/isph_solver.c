@@ -145,7 +145,11 @@ static int prepare(struct isph_solver *s)
                   s->S.kernel->support * s->S.h, s->S.dl, s->rows);
     for (int i = 0; i < s->n; i++)
         s->V[i] = s->rows[i] ? volume(s, i) : 0;
-    return isph_corrections(&s->cl);
+    TRY(isph_corrections(&s->cl));
+    for (int i = 0; i < s->n; i++) /* an isolated wall particle is dry */
+        if (s->isolated[i] && s->type[i] != ISPH_FLUID)
+            s->rows[i] = 0, s->V[i] = 0;
+    return SIM_OK;
 }
 
 int isph_solver_init(struct isph_solver *s, const struct isph_settings *S,
@@ -162,7 +166,7 @@ int isph_solver_init(struct isph_solver *s, const struct isph_settings *S,
         || !ALLOC(aflux, 1) || !ALLOC(aw, 3) || !ALLOC(gp, 2) || !ALLOC(w, 2)
         || !ALLOC(divu, 1) || !ALLOC(Tf, 3) || !ALLOC(Ts, 3)
         || !ALLOC(acc_f, 2) || !ALLOC(acc_s, 2) || !ALLOC(gamma, 1)
-        || !ALLOC(rows, 1))
+        || !ALLOC(rows, 1) || !ALLOC(isolated, 1))
         return SIM_ERR_NOMEM;
 #undef ALLOC
     for (int i = 0; i < s->n; i++) {
@@ -184,7 +188,7 @@ int isph_solver_init(struct isph_solver *s, const struct isph_settings *S,
                                  .nl = &s->nl, .kernel = S->kernel,
                                  .active = s->rows, .h = S->h,
                                  .norm = S->norm, .L = s->L, .c = s->c,
-                                 .S = s->Sv };
+                                 .S = s->Sv, .isolated = s->isolated };
     TRY(build_list(s));
     return prepare(s);
 }
@@ -505,7 +509,7 @@ int isph_step(struct isph_solver *s, double dt)
                          s->rows, s->fs);
     s->n_surface = 0;
     for (int a = 0; a < n; a++) {
-        s->fs[a] = s->fs[a] && s->type[a] == ISPH_FLUID;
+        s->fs[a] = (s->fs[a] || s->isolated[a]) && s->type[a] == ISPH_FLUID;
         s->n_surface += s->fs[a];
     }
     TRY(assemble(s, dt));
@@ -560,6 +564,7 @@ void isph_solver_free(struct isph_solver *s)
     free(s->gus), free(s->aflux), free(s->aw), free(s->gp), free(s->w),
         free(s->divu), free(s->Tf), free(s->Ts);
     free(s->acc_f), free(s->acc_s), free(s->gamma), free(s->rows);
+    free(s->isolated);
     cells_free(&s->grid);
     neighbour_free(&s->nl);
     csr_free(&s->A);

@@ -93,6 +93,9 @@ struct isph_solver {
                                     drag acts on, 2 per particle (S0-07)   */
     double *gu, *gus, *divu, *Tf, *Ts, *acc_f, *acc_s, *gamma;
     uint8_t *rows;               /* 1: water, wet wall (isph_cloud.active)   */
+    uint8_t *isolated;           /* 1: singular corrections (isph.h): a
+                                    water particle has p = 0 and no
+                                    gradients, a wall particle is dry     */
     struct cell_grid grid;
     struct neighbour_list nl;
     struct isph_cloud cl;

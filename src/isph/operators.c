@@ -24,9 +24,12 @@ int isph_corrections(struct isph_cloud *c)
     const struct neighbour_list *nl = c->nl;
     const double reach = c->kernel->support * c->h;
     int bad = -1;
-#pragma omp parallel for schedule(static)
+    long isolated = 0;
+#pragma omp parallel for schedule(static) reduction(+ : isolated)
     for (int a = 0; a < c->n; a++) {
         double Li[4] = { 0 }, G[4] = { 0 }, S[2] = { 0 };
+        if (c->isolated)
+            c->isolated[a] = 0;
         if (c->active && !c->active[a])
             continue;
         for (int64_t k = nl->start[a]; k < nl->start[a + 1]; k++) {
@@ -49,6 +52,13 @@ int isph_corrections(struct isph_cloud *c)
         double *L = c->L + 4 * a;
         if (!(fabs(det) > 1e-12 * (Li[0] * Li[0] + Li[3] * Li[3]))
             || !(dg > 0) || !(tr > 0)) {
+            if (c->isolated) {
+                c->isolated[a] = 1;
+                isolated++;
+                L[0] = L[1] = L[2] = L[3] = 0;
+                c->c[a] = c->S[2 * a] = c->S[2 * a + 1] = 0;
+                continue;
+            }
 #pragma omp critical
             if (bad < 0 || a < bad)
                 bad = a;
@@ -64,6 +74,7 @@ int isph_corrections(struct isph_cloud *c)
         c->S[2 * a] = S[0];
         c->S[2 * a + 1] = S[1];
     }
+    c->n_isolated = isolated;
     if (bad >= 0)
         return sim_error(SIM_ERR_NUMERIC, "ISPH correction at particle %d "
                          "(%g, %g): its neighbours within %g m do not span "

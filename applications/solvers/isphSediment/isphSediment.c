@@ -246,8 +246,9 @@ static void progress(struct solver *sv, char *buf, size_t n)
 {
     const struct sediment *f = (const struct sediment *)sv;
     snprintf(buf, n, "PPE: %d iterations, residual %.3g  surface %ld  "
-             "alpha clipped %ld", f->s.last.iters, f->s.last.res_rel,
-             f->s.n_surface, f->s.n_clipped);
+             "isolated %ld  alpha clipped %ld", f->s.last.iters,
+             f->s.last.res_rel, f->s.n_surface, f->s.cl.n_isolated,
+             f->s.n_clipped);
 }
 
 static void final_stats(struct solver *sv)

@@ -190,6 +190,17 @@ static void test_singular(void **state)
     assert_int_equal(isph_corrections(&cl), SIM_ERR_NUMERIC);
     assert_non_null(strstr(sim_error_message(), "do not span"));
     sim_error_clear();
+    /* with `isolated`: both flagged, their operators zero, no error */
+    uint8_t iso[2] = { 7, 7 };
+    cl.isolated = iso;
+    assert_int_equal(isph_corrections(&cl), SIM_OK);
+    assert_int_equal(cl.n_isolated, 2);
+    assert_int_equal(iso[0], 1);
+    assert_int_equal(iso[1], 1);
+    double f[2] = { 1, 3 }, g[2];
+    isph_gradient(&cl, f, 1, 0, g);
+    assert_true(g[0] == 0 && g[1] == 0);
+    assert_true(c[0] == 0 && S[0] == 0 && S[1] == 0);
     neighbour_free(&nl);
 }
 
