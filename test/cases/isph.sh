@@ -5,7 +5,9 @@
 #     y)), dl = 0.02 m, 1.5 s (E4-04): pressure L2 against rho g (H - y)
 #     < 1 % (measured 2e-12 / 8e-13: hydrostatics is exact), largest
 #     displacement < 0.1 dl (1e-11 dl), |alpha_s - alpha_s0| off the free
-#     surface < 1e-4 (1e-13); the free-surface detector (E4-10) flags the
+#     surface < 1e-4 (1e-13), the water particles' volumes (5.34) sum to
+#     (1 - dl) x 1 m^2 to 1e-9 (E4-03: the wall particles stand on the
+#     walls); the free-surface detector (E4-10) flags the
 #     top row alone, 49 particles, at every step; case 1b with d = 0.15
 #     mm (where the explicit drag blows up) and the semi-implicit drag
 #     (S0-07) likewise
@@ -55,8 +57,8 @@ for k in 1a 1b; do
         log="$c/log.isphSediment"; [ "$k" = 1a ] || log="$c/1b/log.isphSediment"
         surf=$(awk '/^Time/ { for (k = 1; k <= NF; k++) if ($k == "surface") print $(k + 1) }' "$log" | sort -u | tr '\n' ' ')
         echo "$r" | awk '{ gsub(/[(),]/, " "); for (k = 1; k <= NF; k++) { if ($k == "L2") l2 = $(k + 1)
-                             if ($k == "dl") d = $(k - 1); if ($k == "surface") a = $(k + 1) } }
-                         END { exit !(l2 != "" && l2 < 0.01 && d < 0.1 && a < 1e-4) }' \
+                             if ($k == "dl") d = $(k - 1); if ($k == "surface") a = $(k + 1); if ($k == "V") v = $(k + 1) } }
+                         END { e = v - 0.98; if (e < 0) e = -e; exit !(l2 != "" && l2 < 0.01 && d < 0.1 && a < 1e-4 && v != "" && e < 1e-9) }' \
             && pass "isph_neutral_$k" || fail "isph_neutral_$k" "$r"
         [ "$surf" = "49 " ] && pass "isph_surface_$k" || fail "isph_surface_$k" "surface counts over the run: $surf(49 expected)"
     else

@@ -6,7 +6,10 @@
 # dl], the largest |alpha_s - alpha_s0| with alpha_s0 from CASE's
 # system/isphSolution (alphaSediment value + gradient.(x - origin), taken
 # at the particle's start position), over all water particles and over
-# those off the free surface, and the largest speed [m/s].
+# those off the free surface, the largest speed [m/s], and the sum of
+# the water particles' volumes V (5.34) against the 1 m^2 of water (E4-03;
+# the wall particles stand on the walls, so the water particles' cells
+# leave out a strip of dl/2 along each side wall: 1 - dl expected).
 set -e
 case=${1:-.}
 root=${MPSDEM_DIR:-$(cd "${0%/*}/../../../.." && pwd)}
@@ -26,5 +29,5 @@ paste -d' ' <(dump 0 | awk '!/^#/ { print $1, $2 }') <(dump "$t" | grep -v '^#')
       al = a0 + G[1] * ($1 - O[1]) + G[2] * ($2 - O[2]); if (al < 0) al = 0
       ea = $c["alpha.sediment"] - al; if (ea < 0) ea = -ea; if (ea > am) am = ea
       if (!$c["freeSurface"] && ea > ai) ai = ea
-      v = sqrt($c["velocity_0"]^2 + $c["velocity_1"]^2); if (v > vm) vm = v }
-    END { printf "t = %s s: pressure L2 %.3g, displacement %.3g m (%.3g dl), |alpha_s - alpha_s0| %.3g (off the surface %.3g), speed %.3g m/s\n", t, sqrt(s / sa), dm, dm / dl, am, ai, vm }'
+      v = sqrt($c["velocity_0"]^2 + $c["velocity_1"]^2); if (v > vm) vm = v; vol += $c["volume"] }
+    END { printf "t = %s s: pressure L2 %.3g, displacement %.3g m (%.3g dl), |alpha_s - alpha_s0| %.3g (off the surface %.3g), speed %.3g m/s, sum V %.6f m^2\n", t, sqrt(s / sa), dm, dm / dl, am, ai, vm, vol }'

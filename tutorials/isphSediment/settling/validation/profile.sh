@@ -1,5 +1,5 @@
 #!/bin/bash
-# Usage: validation/profile.sh CASE [TIME [DL]]
+# Usage: validation/profile.sh CASE [TIME [DL [OUT]]]
 # The sediment profile of CASE at TIME (default 5 s): the mean alpha_s
 # of each row of water particles (rows by y/DL rounded; DL default 0.01 m)
 # against the hindered-settling solution (5.50) of the initial profile
@@ -14,14 +14,14 @@
 # int_y^H alpha_s dz, H the top row, the integral over the row means
 # (rho_f = 1000, rho_s = 2650, g = 9.8): the L2 error relative to it, and
 # the mean pressure of the bottom row of water less rho_f g H against the
-# excess there. Writes
-# validation/profile_dl<DL>.dat (columns x2 alpha, the rows' means).
+# excess there. Writes OUT (default validation/profile_dl<DL>.dat;
+# columns x2 alpha, the rows' means).
 set -e
-case=${1:?Usage: validation/profile.sh CASE [TIME [DL]]}
+case=${1:?Usage: validation/profile.sh CASE [TIME [DL [OUT]]]}
 t=${2:-5}
 dl=${3:-0.01}
 root=${MPSDEM_DIR:-$(cd "${0%/*}/../../../.." && pwd)}
-out="${0%/*}/profile_dl$dl.dat"
+out=${4:-${0%/*}/profile_dl$dl.dat}
 rows() {
     "$root/bin/vtuInfo" -dump "$case/$1/fluid.vtu" | awk -v dl="$dl" '
         /^# x/ { for (k = 2; k <= NF; k++) c[$k] = k - 1; next }
