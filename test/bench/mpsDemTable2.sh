@@ -5,6 +5,7 @@
 # dp = 0.002, 0.0027, 0.003 m, beside the paper's numbers.
 #
 #   test/bench/mpsDemTable2.sh [STEPS] [DP...]     (default 20 steps, all dp)
+#   FROM=auto test/bench/mpsDemTable2.sh 20        (mid-run, from 0.1 s)
 #
 # Both programs run in tandem, THREADS OpenMP threads each (default 2: in
 # the sequential scheme they take turns, so each has the two cores while it
@@ -32,12 +33,25 @@ export OMP_NUM_THREADS=${THREADS:-2}
 PPE=${PPE:-neighbour}
 # FROM=DIR: steps from the FROM_TIME (default 0.1 s) state of finished
 # runs DIR/modelB-dp<dp> (e.g. a copy of the tutorial after
-# ./Allrun B 0.002 B 0.0027 B 0.003) instead of the release
+# ./Allrun B 0.002 B 0.0027 B 0.003) instead of the release; FROM=auto
+# makes those states first (the tutorial's ./Allrun to FROM_TIME, one
+# thread per program, untimed: ~40 min for the three dp at 0.1 s; with
+# KEEP=1 they stay for another FROM=)
 FROM=${FROM:-}
 FROM_TIME=${FROM_TIME:-0.1}
 # REPEAT=N runs each case N times and keeps the fastest MPS and DEM parts
 # (a shared or virtual machine's timings vary by 10-20 % run to run)
 REPEAT=${REPEAT:-1}
+if [ "$FROM" = auto ]; then
+    FROM="$TMP/prep"
+    cp -r "$ROOT/tutorials/mpsDem/twoPhaseDamBreak" "$FROM"
+    (cd "$FROM" && ./Allclean > /dev/null 2>&1)
+    sed -i "s/^endTime .*/endTime $FROM_TIME;/; s/^writeInterval .*/writeInterval $FROM_TIME;/" "$FROM/system/controlDict"
+    args=(); for dp in "${dps[@]}"; do args+=(B "$dp"); done
+    echo "# preparing the $FROM_TIME s states in $FROM (./Allrun ${args[*]})" >&2
+    MPSDEM_DIR="$ROOT" "$FROM/Allrun" "${args[@]}" > "$FROM/log.Allrun" 2>&1 \
+        || { echo "preparing the states failed: $(tail -3 "$FROM/log.Allrun" | tr '\n' ' ')"; exit 1; }
+fi
 echo "# $(date -u '+%F %T UTC'); $OMP_NUM_THREADS threads per program; load average $(cut -d' ' -f1-3 /proc/loadavg); PPE weights $PPE; $steps steps${FROM:+ from $FROM_TIME s of $FROM}; fastest of $REPEAT"
 declare -A paper_mps=([0.002]=4.40082 [0.0027]=1.83128 [0.003]=1.29677)
 declare -A paper_dem=([0.002]=3.36281 [0.0027]=3.25171 [0.003]=3.24867)
