@@ -6,6 +6,7 @@
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
+#include <string.h>
 #include <unistd.h>
 
 #include "core/dict.h"
@@ -285,7 +286,24 @@ int solver_main(const struct solver_ops *ops, struct solver *sv, int argc,
     return finish(sv);
 }
 
-int solver_wall_cloud_check(const char *path, const char *noun, int n,
+int solver_wall_cloud_size(const struct vtu_cloud *c, const char *path,
+                           const char *noun, int *n)
+{
+    const struct vtu_field *f, *id = vtu_find(c, "id");
+    TRY(vtu_require(c, path, "type", VTU_INT32, 1, &f));
+    TRY(vtu_require(c, path, "patch", VTU_INT32, 1, &f));
+    TRY(vtu_require(c, path, "velocity", VTU_FLOAT64, 3, &f));
+    TRY(vtu_require(c, path, "pressure", VTU_FLOAT64, 1, &f));
+    TRY(vtu_require(c, path, "normal", VTU_FLOAT64, 3, &f));
+    if (id)
+        TRY(vtu_require(c, path, "id", VTU_INT64, 1, &id));
+    if (c->n > 100000000)
+        return sim_error(SIM_ERR_INPUT, "%s: too many %ss", path, noun);
+    *n = (int)c->n;
+    return SIM_OK;
+}
+
+static int wall_cloud_check(const char *path, const char *noun, int n,
                             const double *x, const int32_t *type,
                             const double *normal)
 {
@@ -308,6 +326,23 @@ int solver_wall_cloud_check(const char *path, const char *noun, int n,
                              "normal in the x-y plane", path, noun, i);
     }
     return SIM_OK;
+}
+
+int solver_wall_cloud_copy(const struct vtu_cloud *c, const char *path,
+                           const char *noun,
+                           const struct solver_wall_cloud *w)
+{
+    int n = (int)c->n;
+    const struct vtu_field *id = vtu_find(c, "id");
+    memcpy(w->x, c->points, sizeof *w->x * 3 * n);
+    memcpy(w->u, vtu_find(c, "velocity")->data, sizeof *w->u * 3 * n);
+    memcpy(w->p, vtu_find(c, "pressure")->data, sizeof *w->p * n);
+    memcpy(w->normal, vtu_find(c, "normal")->data, sizeof *w->normal * 3 * n);
+    memcpy(w->type, vtu_find(c, "type")->data, sizeof *w->type * n);
+    memcpy(w->patch, vtu_find(c, "patch")->data, sizeof *w->patch * n);
+    for (int i = 0; i < n; i++)
+        w->id[i] = id ? ((const int64_t *)id->data)[i] : i;
+    return wall_cloud_check(path, noun, n, w->x, w->type, w->normal);
 }
 
 int solver_read_patches_2d(struct solver *sv, struct dict **patches,

@@ -148,12 +148,26 @@ int solver_read_patches_2d(struct solver *sv, struct dict **patches,
 
 /* The start cloud of a 2-D solver with one layer of wall particles on the
  * walls (mlpgFluid's nodes, isphSediment's particles; genParticles with
- * `wallLayers 1` and `origin` on the tank's corner): every particle of
- * type 0 (fluid) or 1 (wall), z = 0, walls with a unit normal in the x-y
- * plane. `noun` names a particle in the message ("node", "particle"). */
-int solver_wall_cloud_check(const char *path, const char *noun, int n,
-                            const double *x, const int32_t *type,
-                            const double *normal);
+ * `wallLayers 1` and `origin` on the tank's corner). `noun` names a
+ * particle in the messages ("node", "particle").
+ *
+ * solver_wall_cloud_size: the .vtu `c` read from `path` has the fields
+ * type, patch (Int32), velocity, normal (Float64 x 3), pressure (Float64)
+ * and, if any, id (Int64), and at most 1e8 particles: *n of them.
+ * solver_wall_cloud_copy: those fields into w's arrays of n (id i where
+ * the cloud has none); every particle of type 0 (fluid) or 1 (wall), z =
+ * 0, walls with a unit normal in the x-y plane. */
+struct vtu_cloud;
+struct solver_wall_cloud {
+    double *x, *u, *p, *normal;
+    int32_t *type, *patch;
+    int64_t *id;
+};
+int solver_wall_cloud_size(const struct vtu_cloud *c, const char *path,
+                           const char *noun, int *n);
+int solver_wall_cloud_copy(const struct vtu_cloud *c, const char *path,
+                           const char *noun,
+                           const struct solver_wall_cloud *w);
 
 /* The clouds into <t>/ (prefix "") and the .pvd, or into <prefix><t>/
  * ("failed.": a state to inspect, not to restart from, not in the .pvd).

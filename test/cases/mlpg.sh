@@ -173,16 +173,7 @@ else
 fi
 
 # --- bad input ---
-bad() { # name expected-regexp
-    local out
-    out=$(cd "$c" && "$ROOT/bin/mlpgFluid" 2>&1); local rc=$?
-    local extra=$(cd "$c" && ls -d [0-9]* | grep -v '^0$' | tr '\n' ' ')
-    if [ $rc -ne 0 ] && echo "$out" | grep -qE "$2" && [ -z "$extra" ]; then
-        pass "mlpg_bad_$1"
-    else
-        fail "mlpg_bad_$1" "rc $rc, time dirs '$extra', message: $(echo "$out" | grep -A1 FATAL | tail -1)"
-    fi
-}
+bad() { expect_refusal "mlpg_bad_$1" mlpgFluid "$2"; } # name expected-regexp
 setcase bad "$CAV"
 sed -i 's/^dp .*/dp 0.1;/' "$c/system/particleDict"
 (cd "$c" && "$ROOT/bin/genParticles" > log.genParticles 2>&1)

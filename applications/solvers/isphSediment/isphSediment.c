@@ -137,38 +137,22 @@ static int copy_cloud(struct sediment *f, const struct vtu_cloud *c,
                       const char *path)
 {
     struct isph_solver *s = &f->s;
-    const struct vtu_field *ty, *pa, *ve, *pr, *no;
-    const struct vtu_field *id = vtu_find(c, "id"), *al = vtu_find(c,
-        "alpha.sediment"), *us = vtu_find(c, "U.sediment"),
-        *vo = vtu_find(c, "volume");
-    TRY(vtu_require(c, path, "type", VTU_INT32, 1, &ty));
-    TRY(vtu_require(c, path, "patch", VTU_INT32, 1, &pa));
-    TRY(vtu_require(c, path, "velocity", VTU_FLOAT64, 3, &ve));
-    TRY(vtu_require(c, path, "pressure", VTU_FLOAT64, 1, &pr));
-    TRY(vtu_require(c, path, "normal", VTU_FLOAT64, 3, &no));
+    const struct vtu_field *al = vtu_find(c, "alpha.sediment"),
+        *us = vtu_find(c, "U.sediment"), *vo = vtu_find(c, "volume");
+    int n;
+    TRY(solver_wall_cloud_size(c, path, "particle", &n));
     if (al) TRY(vtu_require(c, path, "alpha.sediment", VTU_FLOAT64, 1, &al));
     if (us) TRY(vtu_require(c, path, "U.sediment", VTU_FLOAT64, 3, &us));
     if (vo) TRY(vtu_require(c, path, "volume", VTU_FLOAT64, 1, &vo));
-    if (id) TRY(vtu_require(c, path, "id", VTU_INT64, 1, &id));
-    if (c->n > 100000000)
-        return sim_error(SIM_ERR_INPUT, "%s: too many particles", path);
-    int n = (int)c->n;
     TRY(isph_fields_alloc(s, n));
-    memcpy(s->x, c->points, sizeof *s->x * 3 * n);
-    memcpy(s->u, ve->data, sizeof *s->u * 3 * n);
-    memcpy(s->p, pr->data, sizeof *s->p * n);
-    memcpy(s->normal, no->data, sizeof *s->normal * 3 * n);
-    memcpy(s->type, ty->data, sizeof *s->type * n);
-    memcpy(s->patch, pa->data, sizeof *s->patch * n);
-    memcpy(s->us, us ? us->data : ve->data, sizeof *s->us * 3 * n);
+    TRY(solver_wall_cloud_copy(c, path, "particle",
+        &(struct solver_wall_cloud){ s->x, s->u, s->p, s->normal, s->type,
+                                     s->patch, s->id }));
+    memcpy(s->us, us ? us->data : (const void *)s->u, sizeof *s->us * 3 * n);
     if (al)
         memcpy(s->alpha, al->data, sizeof *s->alpha * n);
     if (vo)
         memcpy(s->V, vo->data, sizeof *s->V * n);
-    for (int i = 0; i < n; i++)
-        s->id[i] = id ? ((const int64_t *)id->data)[i] : i;
-    TRY(solver_wall_cloud_check(path, "particle", n, s->x, s->type,
-                                s->normal));
     return al ? SIM_OK : initial_alpha(f);
 }
 

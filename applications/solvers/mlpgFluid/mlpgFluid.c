@@ -52,28 +52,12 @@ static int copy_cloud(struct fluid *f, const struct vtu_cloud *c,
                       const char *path)
 {
     struct mlpg_solver *s = &f->s;
-    const struct vtu_field *ty, *pa, *ve, *pr, *no, *id = vtu_find(c, "id");
-    if (id && (id->type != VTU_INT64 || id->ncomp != 1))
-        return sim_error(SIM_ERR_INPUT, "%s: field 'id' must be Int64", path);
-    TRY(vtu_require(c, path, "type", VTU_INT32, 1, &ty));
-    TRY(vtu_require(c, path, "patch", VTU_INT32, 1, &pa));
-    TRY(vtu_require(c, path, "velocity", VTU_FLOAT64, 3, &ve));
-    TRY(vtu_require(c, path, "pressure", VTU_FLOAT64, 1, &pr));
-    TRY(vtu_require(c, path, "normal", VTU_FLOAT64, 3, &no));
-    if (c->n > 100000000)
-        return sim_error(SIM_ERR_INPUT, "%s: too many nodes", path);
-    int n = (int)c->n;
+    int n;
+    TRY(solver_wall_cloud_size(c, path, "node", &n));
     TRY(mlpg_fields_alloc(s, n));
-    memcpy(s->x, c->points, sizeof *s->x * 3 * n);
-    memcpy(s->u, ve->data, sizeof *s->u * 3 * n);
-    memcpy(s->p, pr->data, sizeof *s->p * n);
-    memcpy(s->normal, no->data, sizeof *s->normal * 3 * n);
-    memcpy(s->type, ty->data, sizeof *s->type * n);
-    memcpy(s->patch, pa->data, sizeof *s->patch * n);
-    for (int i = 0; i < n; i++)
-        s->id[i] = id ? ((const int64_t *)id->data)[i] : i;
-    return solver_wall_cloud_check(path, "node", n, s->x, s->type,
-                                   s->normal);
+    return solver_wall_cloud_copy(c, path, "node",
+        &(struct solver_wall_cloud){ s->x, s->u, s->p, s->normal, s->type,
+                                     s->patch, s->id });
 }
 
 /* walls { <name> { patch P; min (..); max (..); velocity (..); } } or

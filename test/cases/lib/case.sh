@@ -18,3 +18,16 @@ need_bins() {
         [ -x "$ROOT/bin/$b" ] || { fail "$NAME" "bin/$b not built"; exit 1; }
     done
 }
+# expect_refusal NAME PROGRAM REGEXP: PROGRAM of bin/, run in the case $c,
+# must exit non-zero with a message matching REGEXP and write no time
+# directory but 0/ (no corrupted output)
+expect_refusal() {
+    local out rc extra
+    out=$(cd "$c" && "$ROOT/bin/$2" 2>&1); rc=$?
+    extra=$(cd "$c" && ls -d [0-9]* | grep -v '^0$' | tr '\n' ' ')
+    if [ $rc -ne 0 ] && echo "$out" | grep -qE "$3" && [ -z "$extra" ]; then
+        pass "$1"
+    else
+        fail "$1" "rc $rc, time dirs '$extra', message: $(echo "$out" | grep -A1 FATAL | tail -1)"
+    fi
+}
