@@ -163,7 +163,7 @@ int isph_solver_init(struct isph_solver *s, const struct isph_settings *S,
         || !ALLOC(c, 1) || !ALLOC(Sv, 2) || !ALLOC(b, 1)
         || !ALLOC(dalpha_f, 1) || !ALLOC(anew, 1) || !ALLOC(gu, 4)
         || !ALLOC(gus, 4)
-        || !ALLOC(aflux, 1) || !ALLOC(aw, 3) || !ALLOC(gp, 2) || !ALLOC(w, 2)
+        || !ALLOC(aflux, 1) || !ALLOC(aw, 2) || !ALLOC(gp, 2) || !ALLOC(w, 2)
         || !ALLOC(divu, 1) || !ALLOC(Tf, 3) || !ALLOC(Ts, 3)
         || !ALLOC(acc_f, 2) || !ALLOC(acc_s, 2) || !ALLOC(gamma, 1)
         || !ALLOC(rows, 1) || !ALLOC(isolated, 1))
@@ -269,7 +269,7 @@ static void gradients(struct isph_solver *s)
     const double les = (S->cs * S->dl) * (S->cs * S->dl);
     for (int a = 0; a < s->n; a++)
         for (int q = 0; q < 2; q++)
-            s->aw[3 * a + q] = s->alpha[a] * (s->us[3 * a + q]
+            s->aw[2 * a + q] = s->alpha[a] * (s->us[3 * a + q]
                                               - s->u[3 * a + q]);
 #pragma omp parallel for schedule(static)
     for (int a = 0; a < s->n; a++) {
@@ -293,8 +293,8 @@ static void gradients(struct isph_solver *s)
             isph_gradient(&s->cl, s->alpha, 1, a, g0);
             s->aflux[a] = rel[0] * g0[0] + rel[1] * g0[1];
         } else if (S->flux == ISPH_FLUX_CONSERVATIVE) { /* div(alpha_s rel) */
-            isph_gradient(&s->cl, s->aw, 3, a, g0);
-            isph_gradient(&s->cl, s->aw + 1, 3, a, g1);
+            isph_gradient(&s->cl, s->aw, 2, a, g0);
+            isph_gradient(&s->cl, s->aw + 1, 2, a, g1);
             s->aflux[a] = g0[0] + g1[1];
         } else if (s->type[a] == ISPH_FLUID) {
             s->aflux[a] = upwind_flux(s, a, rel);

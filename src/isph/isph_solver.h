@@ -66,8 +66,6 @@ struct isph_settings {
 enum isph_flux { ISPH_FLUX_ADVECTIVE, ISPH_FLUX_CONSERVATIVE, ISPH_FLUX_UPWIND };
 enum isph_drag { ISPH_DRAG_EXPLICIT, ISPH_DRAG_SEMI_IMPLICIT };
 
-
-
 struct isph_timers {
     long steps, ppe_iters;
     double neighbours, explicit_, ppe, correction;
@@ -87,7 +85,7 @@ struct isph_solver {
     double *dalpha_f;            /* alpha_f^n - alpha_f^(n-1) (5.24)       */
     double *anew;                /* alpha_s^(n+1) (5.28)                   */
     double *aflux;               /* the sediment flux term of (5.28) at n  */
-    double *aw;                  /* alpha_s (u_s - u_f) at n, 3 per particle */
+    double *aw;                  /* alpha_s (u_s - u_f) at n, 2 per particle */
     double *gp;                  /* grad p^n at r^n (semi-implicit drag)    */
     double *w;                   /* the relative velocity u_s - u_f that the
                                     drag acts on, 2 per particle (S0-07)   */
