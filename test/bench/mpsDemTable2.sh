@@ -39,6 +39,10 @@ PPE=${PPE:-neighbour}
 # KEEP=1 they stay for another FROM=)
 FROM=${FROM:-}
 FROM_TIME=${FROM_TIME:-0.1}
+# RE=R sets every MPS operator's r_e to R dp (reNumberDensity, reGradient,
+# reLaplacian; the paper states 4.1 for all, doc/theory.md A0-02) in the
+# timed runs; a mid-run state is the tutorial's radii's all the same
+RE=${RE:-}
 # REPEAT=N runs each case N times and keeps the fastest MPS and DEM parts
 # (a shared or virtual machine's timings vary by 10-20 % run to run)
 REPEAT=${REPEAT:-1}
@@ -52,7 +56,7 @@ if [ "$FROM" = auto ]; then
     MPSDEM_DIR="$ROOT" "$FROM/Allrun" "${args[@]}" > "$FROM/log.Allrun" 2>&1 \
         || { echo "preparing the states failed: $(tail -3 "$FROM/log.Allrun" | tr '\n' ' ')"; exit 1; }
 fi
-echo "# $(date -u '+%F %T UTC'); $OMP_NUM_THREADS threads per program; load average $(cut -d' ' -f1-3 /proc/loadavg); PPE weights $PPE; $steps steps${FROM:+ from $FROM_TIME s of $FROM}; fastest of $REPEAT"
+echo "# $(date -u '+%F %T UTC'); $OMP_NUM_THREADS threads per program; load average $(cut -d' ' -f1-3 /proc/loadavg); PPE weights $PPE; r_e ${RE:-of the tutorial}; $steps steps${FROM:+ from $FROM_TIME s of $FROM}; fastest of $REPEAT"
 declare -A paper_mps=([0.002]=4.40082 [0.0027]=1.83128 [0.003]=1.29677)
 declare -A paper_dem=([0.002]=3.36281 [0.0027]=3.25171 [0.003]=3.24867)
 printf "%-8s %9s %7s %7s | %12s %12s %10s | %9s %9s | %8s %8s\n" dp particles fluid grains \
@@ -71,6 +75,11 @@ for dp in "${dps[@]}"; do
         cp -r "$ROOT/tutorials/mpsDem/twoPhaseDamBreak" "$c"
         sed -i "s/^dp .*/dp           $dp;/" "$c/system/particleDict"
         sed -i "s/^endTime .*/endTime $(awk -v n="$steps" 'BEGIN { print n * 1e-4 }');/; s/^writeInterval .*/writeInterval 1;/" "$c/system/controlDict"
+    fi
+    if [ -n "$RE" ]; then
+        for k in reNumberDensity reGradient reLaplacian; do
+            sed -i "s/^$k .*/$k $RE;/" "$c/system/mpsSchemes"
+        done
     fi
     echo "channel mpsdem-table2-$$;" >> "$c/system/couplingDict"
     if [ "$PPE" = symmetric ]; then
