@@ -35,7 +35,7 @@ PPE=${PPE:-neighbour}
 # runs DIR/modelB-dp<dp> (e.g. a copy of the tutorial after
 # ./Allrun B 0.002 B 0.0027 B 0.003) instead of the release; FROM=auto
 # makes those states first (the tutorial's ./Allrun to FROM_TIME, one
-# thread per program, untimed: ~40 min for the three dp at 0.1 s; with
+# thread per program, untimed: 21 min for the three dp at 0.1 s; with
 # KEEP=1 they stay for another FROM=)
 FROM=${FROM:-}
 FROM_TIME=${FROM_TIME:-0.1}
