@@ -267,10 +267,11 @@ static void gradients(struct isph_solver *s)
 {
     const struct isph_settings *S = &s->S;
     const double les = (S->cs * S->dl) * (S->cs * S->dl);
-    for (int a = 0; a < s->n; a++)
-        for (int q = 0; q < 2; q++)
-            s->aw[2 * a + q] = s->alpha[a] * (s->us[3 * a + q]
-                                              - s->u[3 * a + q]);
+    if (S->flux == ISPH_FLUX_CONSERVATIVE) /* its product, for div below */
+        for (int a = 0; a < s->n; a++)
+            for (int q = 0; q < 2; q++)
+                s->aw[2 * a + q] = s->alpha[a] * (s->us[3 * a + q]
+                                                  - s->u[3 * a + q]);
 #pragma omp parallel for schedule(static)
     for (int a = 0; a < s->n; a++) {
         double *gu = s->gu + 4 * a, *gs = s->gus + 4 * a;

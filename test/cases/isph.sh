@@ -76,47 +76,32 @@ else
     fail isph_neutral_1b_semiImplicit "$(echo "$out" | tail -n 2 | tr '\n' ' ')"
 fi
 
-# --- settling (tutorials/isphSediment/settling at dl = 0.02 m) ---
-setcase settling "$ROOT/tutorials/isphSediment/settling"
-rm -f "$c"/validation/profile_dl*.dat
-if out=$(cd "$c" && ./Allrun 0.02 2>&1); then
-    echo "$out" | tail -n 4 | sed 's/^/    /'
-    echo "$out" | awk '/^peak/ { d = $13; if (d < 0) d = -d } /^Linf/ { l = $2 } /^volume/ { v = $(NF - 1); if (v < 0) v = -v }
-                       /^pressure L2/ { p = $3 }
-                       END { exit !(d != "" && d <= 0.01 && l != "" && l <= 0.1 && v != "" && v < 1 && p != "" && p < 0.01) }' \
-        && pass isph_settling || fail isph_settling "$(echo "$out" | tail -n 3 | tr '\n' ' ')"
-else
-    fail isph_settling "$(echo "$out" | tail -n 2 | tr '\n' ' ')"
-fi
-
-# --- settling with the upwind flux (S0-09): sediment volume to round-off,
-# alpha_s never clipped ---
-setcase settling_upwind "$ROOT/tutorials/isphSediment/settling"
-rm -f "$c"/validation/profile_dl*.dat
-set_entry system/isphSchemes sedimentFlux upwind
-if out=$(cd "$c" && ./Allrun 0.02 2>&1); then
-    echo "$out" | tail -n 4 | sed 's/^/    upwind: /'
-    clip=$(awk '/^Time/ { n = $NF } END { print n }' "$c/dl0.02/log.isphSediment")
-    echo "$out" | awk -v clip="$clip" '/^volume/ { split($0, f, " "); v0 = f[2]; v1 = f[8] }
-        END { e = (v1 - v0) / v0; if (e < 0) e = -e; exit !(v0 > 0 && e < 1e-6 && clip == 0) }' \
-        && pass isph_settling_upwind_volume || fail isph_settling_upwind_volume "$(echo "$out" | grep ^volume), clipped $clip"
-else
-    fail isph_settling_upwind_volume "$(echo "$out" | tail -n 2 | tr '\n' ' ')"
-fi
-
-# --- settling with the conservative flux (S0-09): E4-06 and E4-07 as
-# with the advective one ---
-setcase settling_conservative "$ROOT/tutorials/isphSediment/settling"
-rm -f "$c"/validation/profile_dl*.dat
-set_entry system/isphSchemes sedimentFlux conservative
-if out=$(cd "$c" && ./Allrun 0.02 2>&1); then
-    echo "$out" | tail -n 4 | sed 's/^/    conservative: /'
-    echo "$out" | awk '/^peak/ { d = $13; if (d < 0) d = -d } /^Linf/ { l = $2 } /^volume/ { v = $(NF - 1); if (v < 0) v = -v }
-                       END { exit !(d != "" && d <= 0.01 && l != "" && l <= 0.1 && v != "" && v < 1) }' \
-        && pass isph_settling_conservative || fail isph_settling_conservative "$(echo "$out" | tail -n 3 | tr '\n' ' ')"
-else
-    fail isph_settling_conservative "$(echo "$out" | tail -n 2 | tr '\n' ' ')"
-fi
+# --- settling (tutorials/isphSediment/settling at dl = 0.02 m) with each
+# sediment flux (S0-09); settling NAME FLUX GATE: GATE an awk program on
+# the tutorial's output, with clip = the particles clipped over the run ---
+settling() {
+    setcase "$1" "$ROOT/tutorials/isphSediment/settling"
+    rm -f "$c"/validation/profile_dl*.dat
+    set_entry system/isphSchemes sedimentFlux "$2"
+    if out=$(cd "$c" && ./Allrun 0.02 2>&1); then
+        echo "$out" | tail -n 4 | sed "s/^/    $2: /"
+        local clip=$(awk '/^Time/ { n = $NF } END { print n }' "$c/dl0.02/log.isphSediment")
+        echo "$out" | awk -v clip="$clip" "$3" && pass "$1" \
+            || fail "$1" "$(echo "$out" | tail -n 4 | tr '\n' ' '), clipped $clip"
+    else
+        fail "$1" "$(echo "$out" | tail -n 2 | tr '\n' ' ')"
+    fi
+}
+e406='/^peak/ { d = $13; if (d < 0) d = -d } /^Linf/ { l = $2 } /^volume/ { v = $(NF - 1); if (v < 0) v = -v }
+      /^pressure L2/ { p = $3 }'
+settling isph_settling advective "$e406"'
+    END { exit !(d != "" && d <= 0.01 && l != "" && l <= 0.1 && v != "" && v < 1 && p != "" && p < 0.01) }'
+# sediment volume to round-off, alpha_s never clipped
+settling isph_settling_upwind_volume upwind '/^volume/ { split($0, f, " "); v0 = f[2]; v1 = f[8] }
+    END { e = (v1 - v0) / v0; if (e < 0) e = -e; exit !(v0 > 0 && e < 1e-6 && clip == 0) }'
+# E4-06 and E4-07 as with the advective flux
+settling isph_settling_conservative conservative "$e406"'
+    END { exit !(d != "" && d <= 0.01 && l != "" && l <= 0.1 && v != "" && v < 1) }'
 
 # --- the box start profile (S0-10): sum alpha_s V = value x the box's area
 # (0.5 x 0.185 m x 0.27 m, its edges inside particle cells) ---
