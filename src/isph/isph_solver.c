@@ -12,6 +12,7 @@
 #include "coupling/drag/drag.h"
 #include "isph/isph_solver.h"
 #include "linsolve/csr.h"
+#include "particles/operators/collision.h"
 #include "particles/operators/surface_quadrant.h"
 #include "particles/operators/wet_walls.h"
 
@@ -39,11 +40,40 @@ static const struct model_head drag_si = { "semiImplicit",
     "backward-Euler relative velocity, doc/theory.md S0-07" };
 static const struct model_head *const drag_step_table[] = { &drag_ex, &drag_si,
                                                        NULL };
+static const struct model_head wall_neu = { "neumann",
+    "one layer, n.grad p = (rho/dt) n.(u* - U), Pan 2022 eq. 5.31" };
+static const struct model_head wall_dum = { "dummyLayers",
+    "walls in the PPE as water, dummy layers behind, doc/theory.md S0-13" };
+static const struct model_head *const wall_table[] = { &wall_neu, &wall_dum,
+                                                       NULL };
+static const struct model_head surf_q = { "quadrant",
+    "occupied quadrants and columns, Pan 2022 eqs. 5.32-5.33" };
+static const struct model_head surf_d = { "positionDivergence",
+    "quadrant, or div r < 1.5 (Lee et al. 2008), doc/theory.md S0-14" };
+static const struct model_head *const surface_table[] = { &surf_q, &surf_d,
+                                                          NULL };
+static const struct model_head shift_none = { "none",
+    "particles move with the water (Pan 2022)" };
+static const struct model_head shift_lind = { "lind2012",
+    "Fickian shifting, Lind et al. 2012 eqs. 20-24, doc/theory.md S0-15" };
+static const struct model_head *const shift_table[] = { &shift_none,
+                                                        &shift_lind, NULL };
+static const struct model_head coll_none = { "none",
+    "no collision model (Pan 2022)" };
+static const struct model_head coll_lee = { "lee2011",
+    "Lee et al. 2011 collisions on u*, doc/theory.md S0-16" };
+static const struct model_head *const collision_table[] = { &coll_none,
+                                                            &coll_lee, NULL };
 const struct model_choice isph_solver_choices[] = {
     { "system/isphSchemes", "kernel", (const void *const *)isph_kernels },
     { "system/isphSchemes", "laplacian", (const void *const *)norm_table },
     { "system/isphSchemes", "sedimentFlux", (const void *const *)flux_table },
     { "system/isphSchemes", "drag", (const void *const *)drag_step_table },
+    { "system/isphSchemes", "wall", (const void *const *)wall_table },
+    { "system/isphSchemes", "freeSurface", (const void *const *)surface_table },
+    { "system/isphSchemes", "shifting", (const void *const *)shift_table },
+    { "system/isphSchemes", "collision",
+      (const void *const *)collision_table },
     { NULL, NULL, NULL },
 };
 
@@ -78,9 +108,34 @@ int isph_settings_read(const struct dict *transport,
     TRY(model_select_index(schemes, "sedimentFlux", "sediment flux",
                            (const void *const *)flux_table, "advective",
                            &S->flux));
-    return model_select_index(schemes, "drag", "drag integration",
-                              (const void *const *)drag_step_table, "explicit",
-                              &S->drag);
+    TRY(model_select_index(schemes, "drag", "drag integration",
+                           (const void *const *)drag_step_table, "explicit",
+                           &S->drag));
+    TRY(model_select_index(schemes, "wall", "wall scheme",
+                           (const void *const *)wall_table, "neumann",
+                           &S->wall));
+    TRY(model_select_index(schemes, "freeSurface", "free-surface detector",
+                           (const void *const *)surface_table, "quadrant",
+                           &S->surface));
+    TRY(model_select_index(schemes, "shifting", "particle shifting",
+                           (const void *const *)shift_table, "none",
+                           &S->shift));
+    TRY(dict_get_scalar_or(schemes, "shiftingCoefficient", 0.25,
+                           &S->shift_coeff));
+    TRY(dict_range(schemes, "shiftingCoefficient", S->shift_coeff, 0, 10, 0));
+    TRY(dict_get_bool_or(schemes, "clipNegativePressure", 0,
+                         &S->clip_negative));
+    TRY(model_select_index(schemes, "collision", "collision model",
+                           (const void *const *)collision_table, "none",
+                           &S->collision));
+    TRY(dict_get_scalar_or(schemes, "collisionDistance", 0.5,
+                           &S->collision_ratio));
+    TRY(dict_range(schemes, "collisionDistance", S->collision_ratio, 0, 1,
+                   1));
+    TRY(dict_get_scalar_or(schemes, "collisionRestitution", 0.2,
+                           &S->collision_e));
+    return dict_range(schemes, "collisionRestitution", S->collision_e, 0, 1,
+                      0);
 }
 
 int isph_fields_alloc(struct isph_solver *s, int n)
@@ -143,13 +198,34 @@ static int prepare(struct isph_solver *s)
 {
     pop_wet_walls(&s->nl, s->x, s->type, s->normal, s->S.g, 1,
                   s->S.kernel->support * s->S.h, s->S.dl, s->rows);
-    for (int i = 0; i < s->n; i++)
+    for (int i = 0; i < s->n; i++) {
+        if (s->type[i] == ISPH_DUMMY) /* wet with its wall particle */
+            s->rows[i] = s->anchor[i] >= 0 && s->rows[s->anchor[i]];
         s->V[i] = s->rows[i] ? volume(s, i) : 0;
+    }
     TRY(isph_corrections(&s->cl));
     for (int i = 0; i < s->n; i++) /* an isolated wall particle is dry */
         if (s->isolated[i] && s->type[i] != ISPH_FLUID)
             s->rows[i] = 0, s->V[i] = 0;
     return SIM_OK;
+}
+
+/* The nearest wall particle of every dummy within the kernel's support
+ * (walls do not move); -1 for a dummy out of every wall particle's reach
+ * (deep in a corner), which no water particle reaches either. */
+static void find_anchors(struct isph_solver *s)
+{
+    for (int a = 0; a < s->n; a++) {
+        s->anchor[a] = -1;
+        if (s->type[a] != ISPH_DUMMY)
+            continue;
+        double best = INFINITY;
+        for (int64_t k = s->nl.start[a]; k < s->nl.start[a + 1]; k++) {
+            int b = s->nl.j[k];
+            if (s->type[b] == ISPH_WALL && s->nl.r[k] < best)
+                best = s->nl.r[k], s->anchor[a] = b;
+        }
+    }
 }
 
 int isph_solver_init(struct isph_solver *s, const struct isph_settings *S,
@@ -166,11 +242,15 @@ int isph_solver_init(struct isph_solver *s, const struct isph_settings *S,
         || !ALLOC(aflux, 1) || !ALLOC(aw, 2) || !ALLOC(gp, 2) || !ALLOC(w, 2)
         || !ALLOC(divu, 1) || !ALLOC(Tf, 3) || !ALLOC(Ts, 3)
         || !ALLOC(acc_f, 2) || !ALLOC(acc_s, 2) || !ALLOC(gamma, 1)
-        || !ALLOC(rows, 1) || !ALLOC(isolated, 1))
+        || !ALLOC(rows, 1) || !ALLOC(isolated, 1) || !ALLOC(anchor, 1))
         return SIM_ERR_NOMEM;
 #undef ALLOC
+    for (int i = 0; i < s->n; i++)
+        if (s->type[i] == ISPH_DUMMY && S->wall != ISPH_WALL_DUMMY)
+            return sim_error(SIM_ERR_INPUT, "particle %d is a dummy "
+                             "particle: they go with wall dummyLayers", i);
     for (int i = 0; i < s->n; i++) {
-        if (s->type[i] == ISPH_WALL) { /* walls: pure water at rest */
+        if (s->type[i] != ISPH_FLUID) { /* walls: pure water at rest */
             s->alpha[i] = 0;
             memset(s->u + 3 * i, 0, 3 * sizeof(double));
             memset(s->us + 3 * i, 0, 3 * sizeof(double));
@@ -190,6 +270,7 @@ int isph_solver_init(struct isph_solver *s, const struct isph_settings *S,
                                  .norm = S->norm, .L = s->L, .c = s->c,
                                  .S = s->Sv, .isolated = s->isolated };
     TRY(build_list(s));
+    find_anchors(s);
     return prepare(s);
 }
 
@@ -396,9 +477,47 @@ static int assemble(struct isph_solver *s, double dt)
             A->col[e + 1 + k] = nl->j[k0 + k];
             A->val[e + 1 + k] = 0;
         }
-        if (!s->rows[a] || (s->type[a] == ISPH_FLUID && s->fs[a])) {
+        if (!s->rows[a] || s->fs[a]) {
             A->val[e] = 1; /* free surface, dry wall: p = 0 */
             s->b[a] = 0;
+            continue;
+        }
+        if (s->type[a] != ISPH_FLUID && s->S.wall == ISPH_WALL_DUMMY) {
+            /* the water's pressure extrapolated (Adami et al. 2012 eq.
+             * 27, U = 0): p_a = sum_f W_af (p_f + rho g.(x_a - x_f))
+             * / sum_f W_af over the water f in reach */
+            double ws = 0, gr = 0;
+            for (int k = 0; k < m; k++) {
+                int f = nl->j[k0 + k];
+                double r = nl->r[k0 + k];
+                if (s->type[f] != ISPH_FLUID || !(s->V[f] > 0) || r >= reach)
+                    continue;
+                double wk = s->S.kernel->w(r, s->S.h);
+                A->val[e + 1 + k] = -wk;
+                ws += wk;
+                gr += wk * (s->S.g[0] * (s->x[3 * a] - s->x[3 * f])
+                            + s->S.g[1] * (s->x[3 * a + 1] - s->x[3 * f + 1]));
+            }
+            A->val[e] = 1;
+            if (ws > 0) {
+                for (int k = 0; k < m; k++)
+                    A->val[e + 1 + k] /= ws;
+                s->b[a] = rho * gr / ws;
+                continue;
+            }
+            /* a dummy out of the water's reach: its wall particle's p
+             * plus hydrostatics (a wall particle there is dry: p = 0) */
+            int w = s->anchor[a];
+            s->b[a] = 0;
+            if (w < 0)
+                continue;
+            for (int k = 0; k < m; k++)
+                if (nl->j[k0 + k] == w) {
+                    A->val[e + 1 + k] = -1;
+                    break;
+                }
+            s->b[a] = rho * (s->S.g[0] * (s->x[3 * a] - s->x[3 * w])
+                             + s->S.g[1] * (s->x[3 * a + 1] - s->x[3 * w + 1]));
             continue;
         }
         if (s->type[a] == ISPH_FLUID) {
@@ -451,10 +570,105 @@ static int assemble(struct isph_solver *s, double dt)
     return SIM_OK;
 }
 
+/* clipNegativePressure (S0-17): the water's p < 0 set to 0, then the
+ * walls' and dummies' rows (their pressure extrapolated from the water,
+ * unit diagonal) evaluated again with it, walls first: above the
+ * waterline they keep their hydrostatic p < 0, so still water stays
+ * still, while under a thin tongue they no longer pass on the water's
+ * suction. */
+static void clip_negative(struct isph_solver *s)
+{
+    const struct csr_matrix *A = &s->A;
+    for (int a = 0; a < s->n; a++)
+        if (s->type[a] == ISPH_FLUID)
+            s->p[a] = fmax(s->p[a], 0);
+    for (int pass = ISPH_WALL; pass <= ISPH_DUMMY; pass++)
+        for (int a = 0; a < s->n; a++) {
+            if (s->type[a] != pass || s->S.wall != ISPH_WALL_DUMMY)
+                continue;
+            double v = s->b[a];
+            for (int64_t e = A->rowptr[a] + 1; e < A->rowptr[a + 1]; e++)
+                v -= A->val[e] * s->p[A->col[e]];
+            s->p[a] = v / A->val[A->rowptr[a]];
+        }
+}
+
+/* wall dummyLayers (S0-13): the walls are impermeable. A water particle
+ * that ends a step less than dl/2 from the wall line of the wall particle
+ * it stands over (|tangential offset| < dl/2) is put back at dl/2 and
+ * loses the part of its velocity into the wall: where the pressure is
+ * nearly zero (the tip of a surge on a dry floor) nothing else stops a
+ * particle falling into the floor. Counted in the log (`pushedBack`).
+ * Within 1.5 dl of the wall line the sediment loses its velocity into
+ * the wall (u_s.n = U.n = 0, D.5): the model has no normal stress of
+ * the sediment, and the grains arriving at the floor would drag the
+ * first rows of water into it. */
+static void keep_off_walls(struct isph_solver *s)
+{
+    const double half = 0.5 * s->S.dl;
+    long pushed = 0;
+#pragma omp parallel for schedule(static) reduction(+ : pushed)
+    for (int a = 0; a < s->n; a++) {
+        if (s->type[a] != ISPH_FLUID)
+            continue;
+        double *xa = s->x + 3 * a, *ua = s->u + 3 * a, *us = s->us + 3 * a;
+        for (int64_t k = s->nl.start[a]; k < s->nl.start[a + 1]; k++) {
+            int b = s->nl.j[k];
+            if (s->type[b] != ISPH_WALL)
+                continue;
+            const double *nb = s->normal + 3 * b, *xb = s->x + 3 * b;
+            double dx = xa[0] - xb[0], dy = xa[1] - xb[1];
+            double d = dx * nb[0] + dy * nb[1]; /* < 0: on the water side */
+            double t = fabs(-dx * nb[1] + dy * nb[0]);
+            if (t >= half || d <= -3 * half)
+                continue;
+            double sn = us[0] * nb[0] + us[1] * nb[1];
+            if (sn > 0) { /* the first row: no sediment into the wall */
+                us[0] -= sn * nb[0];
+                us[1] -= sn * nb[1];
+            }
+            if (d <= -half)
+                continue;
+            xa[0] -= (d + half) * nb[0];
+            xa[1] -= (d + half) * nb[1];
+            double un = ua[0] * nb[0] + ua[1] * nb[1];
+            if (un > 0) {
+                ua[0] -= un * nb[0];
+                ua[1] -= un * nb[1];
+            }
+            pushed++;
+        }
+    }
+    s->n_pushed += pushed;
+}
+
+/* freeSurface positionDivergence (S0-14): a water particle whose
+ * div r = sum_b V_b (x_b - x_a).grad W_ab (2 inside the water in 2-D,
+ * about 1 on the surface) is below 1.5 is on the surface too (Lee et al.
+ * 2008): it catches the thin tongues and stretched layers of a fast flow
+ * whose four quadrants the walls and a few neighbours fill. */
+static void divergence_surface(struct isph_solver *s)
+{
+    const double reach = s->S.kernel->support * s->S.h;
+#pragma omp parallel for schedule(static)
+    for (int a = 0; a < s->n; a++) {
+        if (s->type[a] != ISPH_FLUID || !s->rows[a] || s->fs[a])
+            continue;
+        double dr = 0;
+        for (int64_t k = s->nl.start[a]; k < s->nl.start[a + 1]; k++) {
+            int b = s->nl.j[k];
+            double r = s->nl.r[k];
+            if (b != a && r > 0 && r < reach && s->V[b] > 0)
+                dr -= s->V[b] * s->S.kernel->dw(r, s->S.h) * r;
+        }
+        s->fs[a] = dr < ISPH_SURFACE_DIV_R;
+    }
+}
+
 int isph_step(struct isph_solver *s, double dt)
 {
     const struct isph_settings *S = &s->S;
-    const int n = s->n;
+    const int n = s->n, dummies = S->wall == ISPH_WALL_DUMMY;
     double t0 = app_wall_time();
     if (s->t.steps > 0) {
         TRY(build_list(s));
@@ -492,6 +706,9 @@ int isph_step(struct isph_solver *s, double dt)
             us[q] = s->u[3 * a + q] + dt * (s->acc_f[2 * a + q] + S->g[q]
                                             + kf * w[q]);
     }
+    if (S->collision == ISPH_COLLISION_LEE2011) /* x0: work, set below */
+        pop_collision(&s->nl, s->x, s->type, NULL, S->collision_ratio * S->dl,
+                      S->collision_e, s->ustar, s->x0);
     s->n_clipped += new_alpha(s, dt);
     memcpy(s->x0, s->x, 3 * sizeof(double) * (size_t)n);
     for (int a = 0; a < n; a++)
@@ -505,9 +722,11 @@ int isph_step(struct isph_solver *s, double dt)
     TRY(prepare(s));
     for (int a = 0; a < n; a++)
         s->fs[a] = s->type[a] == ISPH_FLUID;
-    /* water and wet walls count as neighbours */
+    /* water and wet walls (and their dummies) count as neighbours */
     pop_surface_quadrant(&s->nl, s->x, 2.5 * S->dl, 0.4 * S->dl, s->fs,
-                         s->rows, s->fs);
+                         s->rows, dummies ? s->normal : NULL, s->fs);
+    if (S->surface == ISPH_SURFACE_DIVERGENCE)
+        divergence_surface(s);
     s->n_surface = 0;
     for (int a = 0; a < n; a++) {
         s->fs[a] = (s->fs[a] || s->isolated[a]) && s->type[a] == ISPH_FLUID;
@@ -516,6 +735,8 @@ int isph_step(struct isph_solver *s, double dt)
     TRY(assemble(s, dt));
     double t2 = app_wall_time();
     TRY(linsolve_solve(s->ls, &s->A, s->b, s->p, &s->last));
+    if (S->clip_negative)
+        clip_negative(s);
     s->t.ppe_iters += s->last.iters;
     double t3 = app_wall_time();
     s->t.ppe += t3 - t2;
@@ -548,6 +769,10 @@ int isph_step(struct isph_solver *s, double dt)
         if (s->type[a] == ISPH_FLUID
             && s->V[a] > 0) /* V of the new fraction (5.34) */
             s->V[a] = volume(s, a);
+    if (dummies)
+        keep_off_walls(s);
+    if (S->shift == ISPH_SHIFT_LIND2012)
+        isph_shift(s);
     for (int a = 0; a < 3 * n; a++)
         if (!isfinite(s->u[a]) || !isfinite(s->us[a]))
             return sim_error(SIM_ERR_NUMERIC, "ISPH particle %d: non-finite "
@@ -565,7 +790,7 @@ void isph_solver_free(struct isph_solver *s)
     free(s->gus), free(s->aflux), free(s->aw), free(s->gp), free(s->w),
         free(s->divu), free(s->Tf), free(s->Ts);
     free(s->acc_f), free(s->acc_s), free(s->gamma), free(s->rows);
-    free(s->isolated);
+    free(s->isolated), free(s->anchor);
     cells_free(&s->grid);
     neighbour_free(&s->nl);
     csr_free(&s->A);

@@ -30,7 +30,17 @@
  *
  * Wall particles (type 1) are one layer on the walls, at rest (u = U = 0),
  * pure fluid (alpha_s = 0); a wall particle with no water particle in its
- * support is dry: p = 0 and V = 0, so it takes part in no sum.
+ * support is dry: p = 0 and V = 0, so it takes part in no sum. Two wall
+ * schemes (system/isphSchemes `wall`, doc/theory.md S0-13):
+ *   neumann      one layer, the row (5.31) (the thesis);
+ *   dummyLayers  the wall particles (type 1) and the dummy layers behind
+ *                them (type 2; wallLayers 3 in system/particleDict) are
+ *                full neighbours, and their pressure is the water's
+ *                extrapolated (Adami et al. 2012 eq. 27, U = 0): p_w =
+ *                sum_f W_wf (p_f + rho_f g.(x_w - x_f)) / sum_f W_wf over
+ *                the water f in reach, one row of the same matrix. A dummy
+ *                out of the water's reach takes its nearest wall
+ *                particle's p plus hydrostatics and is dry with it.
  */
 #ifndef MPSDEM_ISPH_ISPH_SOLVER_H
 #define MPSDEM_ISPH_ISPH_SOLVER_H
@@ -45,7 +55,7 @@
 
 struct dict;
 
-enum { ISPH_FLUID = 0, ISPH_WALL = 1 };
+enum { ISPH_FLUID = 0, ISPH_WALL = 1, ISPH_DUMMY = 2 };
 
 /* Below this alpha_s a particle carries no sediment phase: no log factor
  * (D-09), no sediment stress and no advection of u_s (S0-11), so that
@@ -61,10 +71,25 @@ struct isph_settings {
     double cs, les_n;            /* Smagorinsky C (0.1), exponent n (S0-04) */
     int flux;                    /* enum isph_flux (S0-09)                 */
     int drag;                    /* enum isph_drag (S0-07)                 */
+    int wall;                    /* enum isph_wall (S0-13)                 */
+    int surface;                 /* enum isph_surface (S0-14)              */
+    int shift;                   /* enum isph_shift (S0-15)                */
+    double shift_coeff;          /* lind2012: A of D = A h^2               */
+    int clip_negative;           /* 1: p < 0 set to 0 after the solve (S0-17) */
+    int collision;               /* enum isph_collision (S0-16)            */
+    double collision_ratio, collision_e; /* lee2011: distance [dl], e      */
 };
 
 enum isph_flux { ISPH_FLUX_ADVECTIVE, ISPH_FLUX_CONSERVATIVE, ISPH_FLUX_UPWIND };
 enum isph_drag { ISPH_DRAG_EXPLICIT, ISPH_DRAG_SEMI_IMPLICIT };
+enum isph_wall { ISPH_WALL_NEUMANN, ISPH_WALL_DUMMY };
+enum isph_surface { ISPH_SURFACE_QUADRANT, ISPH_SURFACE_DIVERGENCE };
+enum isph_shift { ISPH_SHIFT_NONE, ISPH_SHIFT_LIND2012 };
+enum isph_collision { ISPH_COLLISION_NONE, ISPH_COLLISION_LEE2011 };
+
+/* freeSurface positionDivergence: surface below this div r (2 inside
+ * the water in 2-D; Lee et al. 2008 take 1.5, S0-14 says why 1.6) */
+#define ISPH_SURFACE_DIV_R 1.6
 
 struct isph_timers {
     long steps, ppe_iters;
@@ -91,6 +116,7 @@ struct isph_solver {
                                     drag acts on, 2 per particle (S0-07)   */
     double *gu, *gus, *divu, *Tf, *Ts, *acc_f, *acc_s, *gamma;
     uint8_t *rows;               /* 1: water, wet wall (isph_cloud.active)   */
+    int *anchor;                 /* a dummy's nearest wall particle, else -1 */
     uint8_t *isolated;           /* 1: singular corrections (isph.h): a
                                     water particle has p = 0 and no
                                     gradients, a wall particle is dry     */
@@ -103,6 +129,7 @@ struct isph_solver {
     struct linsolve_stats last;
     struct isph_timers t;
     long n_surface, n_clipped;
+    long n_pushed;               /* water particles put back off a wall    */
 };
 
 /* constant/transportProperties (rho, nu), constant/sedimentProperties
@@ -122,6 +149,11 @@ int isph_solver_init(struct isph_solver *s, const struct isph_settings *S,
                      struct linsolve *ls);
 
 int isph_step(struct isph_solver *s, double dt);
+
+/* shifting lind2012 (shifting.c; doc/theory.md S0-15): move the water
+ * particles at r^(n+1) by the Fickian shift, with the free-surface flags
+ * of the step. */
+void isph_shift(struct isph_solver *s);
 
 void isph_solver_free(struct isph_solver *s);
 

@@ -329,7 +329,7 @@ static int dirichlet_nodes(struct mlpg_solver *s)
             counts[i] = flag[i] || !given[i];     /* and the neighbours */
         }
         pop_surface_quadrant(&s->nl, s->x, 2.5 * s->S.dl, 0.4 * s->S.dl,
-                             flag, counts, flag);
+                             flag, counts, NULL, flag);
         for (int i = 0; i < s->n; i++)
             if (s->type[i] == MLPG_FLUID)
                 given[i] = s->surface[i] = flag[i];

@@ -305,18 +305,19 @@ int solver_wall_cloud_size(const struct vtu_cloud *c, const char *path,
 
 static int wall_cloud_check(const char *path, const char *noun, int n,
                             const double *x, const int32_t *type,
-                            const double *normal)
+                            const double *normal, int dummies)
 {
     for (int i = 0; i < n; i++) {
-        if (type[i] == 2)
+        if (type[i] == 2 && !dummies)
             return sim_error(SIM_ERR_INPUT, "%s: %s %d is a dummy particle "
                              "(type 2): this solver has one layer of wall "
                              "particles on the wall (system/particleDict: "
                              "wallLayers 1, origin on the tank's corner)",
                              path, noun, i);
-        if (type[i] != 0 && type[i] != 1)
+        if (type[i] != 0 && type[i] != 1 && type[i] != 2)
             return sim_error(SIM_ERR_INPUT, "%s: %s %d has type %d (0 "
-                             "fluid, 1 wall)", path, noun, i, type[i]);
+                             "fluid, 1 wall%s)", path, noun, i, type[i],
+                             dummies ? ", 2 dummy" : "");
         if (x[3 * i + 2] != 0)
             return sim_error(SIM_ERR_INPUT, "%s: %s %d has z = %g (2-D)",
                              path, noun, i, x[3 * i + 2]);
@@ -342,7 +343,8 @@ int solver_wall_cloud_copy(const struct vtu_cloud *c, const char *path,
     memcpy(w->patch, vtu_find(c, "patch")->data, sizeof *w->patch * n);
     for (int i = 0; i < n; i++)
         w->id[i] = id ? ((const int64_t *)id->data)[i] : i;
-    return wall_cloud_check(path, noun, n, w->x, w->type, w->normal);
+    return wall_cloud_check(path, noun, n, w->x, w->type, w->normal,
+                            w->dummies);
 }
 
 int solver_read_patches_2d(struct solver *sv, struct dict **patches,

@@ -155,13 +155,15 @@ int solver_read_patches_2d(struct solver *sv, struct dict **patches,
  * type, patch (Int32), velocity, normal (Float64 x 3), pressure (Float64)
  * and, if any, id (Int64), and at most 1e8 particles: *n of them.
  * solver_wall_cloud_copy: those fields into w's arrays of n (id i where
- * the cloud has none); every particle of type 0 (fluid) or 1 (wall), z =
- * 0, walls with a unit normal in the x-y plane. */
+ * the cloud has none); every particle of type 0 (fluid) or 1 (wall), or
+ * with `dummies` also 2 (dummy), z = 0, walls with a unit normal in the
+ * x-y plane. */
 struct vtu_cloud;
 struct solver_wall_cloud {
     double *x, *u, *p, *normal;
     int32_t *type, *patch;
     int64_t *id;
+    int dummies;                 /* 1: dummy layers (type 2) accepted */
 };
 int solver_wall_cloud_size(const struct vtu_cloud *c, const char *path,
                            const char *noun, int *n);

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
-# isph.sh — isphSediment on its tutorial (tutorials/isphSediment; doc/
-# theory.md S, checks E.4; ~40 s):
+# isph.sh — isphSediment on its tutorials (tutorials/isphSediment; doc/
+# theory.md S, checks E.4; ~50 s):
 #   neutral buoyancy, cases 1a (alpha_s = 0.1) and 1b (alpha_s = 0.5 (1 -
 #     y)), dl = 0.02 m, 1.5 s (E4-04): pressure L2 against rho g (H - y)
 #     < 1 % (measured 2e-12 / 8e-13: hydrostatics is exact), largest
@@ -30,16 +30,24 @@
 #     in the middle of the tank within 0.5 % of the thesis's omega_s
 #     (measured -0.09, -0.08, -0.07, -0.06 %), explicit and semi-implicit
 #     drag
+#   the options for fast flows (wall dummyLayers, freeSurface
+#     positionDivergence, shifting, collision, clipNegativePressure; S0-13
+#     to S0-17) on case 1a with wallLayers 3: still water stays at rest
+#     (pressure L2 < 1e-9, displacement < 1e-6 dl; measured 1e-12)
+#   the dam break (tutorials/isphSediment/damBreak) at a/10, 0.6 s: RMS of
+#     the front < 0.35 (measured 0.27), of the column height < 0.05 (0.03)
 #   bad input: an unknown kernel (file:line, did you mean), a smoothing
 #     length whose support misses the free-surface detector's reach, no
-#     constant/sedimentProperties, dummy particles, alpha_s above alphaMax:
-#     non-zero exit, a message naming the cause, no time directory written
+#     constant/sedimentProperties, dummy particles with wall neumann, wall
+#     dummyLayers without them, an unknown wall scheme, alpha_s above
+#     alphaMax: non-zero exit, a message naming the cause, no time
+#     directory written
 NAME=isph; . "$(dirname "$0")/lib/case.sh"
 need_bins isphSediment genParticles vtuInfo dictTool
 export MPSDEM_DIR="$ROOT"
 NB="$ROOT/tutorials/isphSediment/neutralBuoyancy"
 setcase() { rm -rf "$TMP/$1"; cp -r "$2" "$TMP/$1"; c="$TMP/$1"; }
-set_entry() { "$ROOT/bin/dictTool" -case "$c" "$1" -set "$2=$3" >/dev/null; }
+set_entry() { "$ROOT/bin/dictTool" -case "$c" "$1" -new -set "$2=$3" >/dev/null; }
 
 bad() { expect_refusal "isph_bad_$1" isphSediment "$2"; } # name expected-regexp
 for k in 1a 1b; do
@@ -178,6 +186,42 @@ for p in "0.15e-3 0.01590" "0.8e-3 0.1260" "1.3e-3 0.1961" "5e-3 0.4952"; do
 done
 done
 
+# --- the options for fast flows (S0-13 to S0-17) keep still water at rest:
+# case 1a with the dam break's isphSchemes and wallLayers 3, the E4-04
+# gates and the same exactness (measured 1e-12) ---
+DB="$ROOT/tutorials/isphSediment/damBreak"
+setcase neutralDummy "$NB"
+set_entry system/particleDict wallLayers 3
+for k in wall freeSurface shifting shiftingCoefficient collision collisionDistance collisionRestitution clipNegativePressure; do
+    set_entry system/isphSchemes "$k" "$("$ROOT/bin/dictTool" "$DB/system/isphSchemes" -entry "$k" | tr -d ';')"
+done
+if out=$(cd "$c" && ./Allrun 1a 2>&1); then
+    r=$(echo "$out" | tail -n 1)
+    echo "    1a, dam-break options: $r"
+    echo "$r" | awk '{ gsub(/[(),]/, " "); for (k = 1; k <= NF; k++) { if ($k == "L2") l2 = $(k + 1)
+                         if ($k == "dl") d = $(k - 1); if ($k == "surface") a = $(k + 1); if ($k == "V") v = $(k + 1) } }
+                     END { e = v - 0.98; if (e < 0) e = -e; exit !(l2 != "" && l2 < 1e-9 && d < 1e-6 && a < 1e-9 && e < 1e-9) }' \
+        && pass isph_neutral_1a_dummyLayers || fail isph_neutral_1a_dummyLayers "$r"
+else
+    fail isph_neutral_1a_dummyLayers "$(echo "$out" | tail -n 2 | tr '\n' ' ')"
+fi
+
+# --- the dam break (tutorials/isphSediment/damBreak) at a/10 (dl = 0.02
+# m, dt = 1e-3 s), 0.6 s: it runs through the surge's arrival at the far
+# wall, RMS of the front Z < 0.35 (measured 0.27) and of the column height
+# H < 0.05 (0.03) against Martin & Moyce ---
+setcase damBreak "$DB"
+set_entry system/particleDict dp 0.02
+set_entry system/controlDict deltaT 1e-3
+if out=$(cd "$c" && ./Allrun 2>&1); then
+    z=$(echo "$out" | awk '$1 == "rmsZ" { print $2 }'); h=$(echo "$out" | awk '$1 == "rmsH" { print $2 }')
+    echo "    dam break a/10: rmsZ $z rmsH $h"
+    awk -v z="$z" -v h="$h" 'BEGIN { exit !(z != "" && z < 0.35 && h < 0.05) }' \
+        && pass isph_damBreak || fail isph_damBreak "rmsZ $z rmsH $h"
+else
+    fail isph_damBreak "$(echo "$out" | tail -n 2 | tr '\n' ' ')"
+fi
+
 # --- bad input ---
 setcase bad "$NB"
 sed -i 's/^dp .*/dp 0.1;/' "$c/system/particleDict"
@@ -196,5 +240,11 @@ bad alphaMax "alpha.sediment 0.7 outside \[0, alphaMax = 0.606\]"
 set_entry system/isphSolution alphaSediment/value 0.1
 set_entry system/particleDict wallLayers 2
 (cd "$c" && "$ROOT/bin/genParticles" > log.genParticles 2>&1)
-bad dummy "0/fluid.vtu: particle [0-9]+ is a dummy particle .*wallLayers 1"
+bad dummy "system/isphSchemes.*0/fluid.vtu holds [0-9]+ dummy particles .*wall dummyLayers.*wallLayers 1"
+set_entry system/particleDict wallLayers 1
+(cd "$c" && "$ROOT/bin/genParticles" > log.genParticles 2>&1)
+set_entry system/isphSchemes wall dummyLayers
+bad noDummy "system/isphSchemes:[0-9]+.*no dummy particles.*wallLayers 3"
+set_entry system/isphSchemes wall dummy
+bad wallName "system/isphSchemes:[0-9]+.*unknown wall scheme 'dummy'; valid: neumann dummyLayers"
 exit $((fails > 0))

@@ -147,7 +147,7 @@ static int copy_cloud(struct sediment *f, const struct vtu_cloud *c,
     TRY(isph_fields_alloc(s, n));
     TRY(solver_wall_cloud_copy(c, path, "particle",
         &(struct solver_wall_cloud){ s->x, s->u, s->p, s->normal, s->type,
-                                     s->patch, s->id }));
+                                     s->patch, s->id, 1 }));
     memcpy(s->us, us ? us->data : (const void *)s->u, sizeof *s->us * 3 * n);
     if (al)
         memcpy(s->alpha, al->data, sizeof *s->alpha * n);
@@ -191,6 +191,17 @@ static int create(struct solver *sv)
     vtu_cloud_free(&c);
     if (rc)
         return rc;
+    int n_dummy = 0;
+    for (int i = 0; i < f->s.n; i++)
+        n_dummy += f->s.type[i] == ISPH_DUMMY;
+    if ((S.wall == ISPH_WALL_DUMMY) != (n_dummy > 0))
+        return dict_error(f->schemes, "wall", SIM_ERR_DICT, n_dummy
+            ? "%s holds %d dummy particles (type 2): `wall dummyLayers;`, "
+              "or one layer of wall particles (wallLayers 1 in "
+              "system/particleDict)"
+            : "%s holds no dummy particles: `wall dummyLayers` needs the "
+              "layers behind the wall particles (wallLayers 3 in "
+              "system/particleDict)", rel, n_dummy);
     TRY(linsolve_create(ppe, &ls));
     TRY(isph_solver_init(&f->s, &S, ls));
     TRY(solver_check_unused(sv, f->schemes));
@@ -230,9 +241,9 @@ static void progress(struct solver *sv, char *buf, size_t n)
 {
     const struct sediment *f = (const struct sediment *)sv;
     snprintf(buf, n, "PPE: %d iterations, residual %.3g  surface %ld  "
-             "isolated %ld  alpha clipped %ld", f->s.last.iters,
-             f->s.last.res_rel, f->s.n_surface, f->s.cl.n_isolated,
-             f->s.n_clipped);
+             "isolated %ld  alpha clipped %ld  pushedBack %ld",
+             f->s.last.iters, f->s.last.res_rel, f->s.n_surface,
+             f->s.cl.n_isolated, f->s.n_clipped, f->s.n_pushed);
 }
 
 static void final_stats(struct solver *sv)

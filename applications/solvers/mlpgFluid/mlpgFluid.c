@@ -57,7 +57,7 @@ static int copy_cloud(struct fluid *f, const struct vtu_cloud *c,
     TRY(mlpg_fields_alloc(s, n));
     return solver_wall_cloud_copy(c, path, "node",
         &(struct solver_wall_cloud){ s->x, s->u, s->p, s->normal, s->type,
-                                     s->patch, s->id });
+                                     s->patch, s->id, 0 });
 }
 
 /* walls { <name> { patch P; min (..); max (..); velocity (..); } } or

@@ -12,7 +12,10 @@
  * are the strips of half width `half_width` from I along each axis,
  * clipped by the search circle. A particle inside the water sees all four
  * directions occupied; one on the surface has an empty sector and column
- * above it.
+ * above it. A wall particle given a facing direction occupies the sector
+ * and column of that direction (the side of the water its wall is on),
+ * not those of its position: the floor ahead of a surge's tip then does
+ * not fill the tip's eastern sector.
  */
 #include <math.h>
 
@@ -22,7 +25,7 @@
 void pop_surface_quadrant(const struct neighbour_list *nl, const double *x,
                           double radius, double half_width,
                           const uint8_t *rows, const uint8_t *counts,
-                          uint8_t *flag)
+                          const double *facing, uint8_t *flag)
 {
 #pragma omp parallel for schedule(static)
     for (int i = 0; i < nl->n; i++) {
@@ -34,6 +37,10 @@ void pop_surface_quadrant(const struct neighbour_list *nl, const double *x,
             if (nl->r[k] >= radius || (counts && !counts[j]))
                 continue;
             double dx = x[3 * j] - x[3 * i], dy = x[3 * j + 1] - x[3 * i + 1];
+            if (facing && (facing[3 * j] != 0 || facing[3 * j + 1] != 0)) {
+                dx = facing[3 * j]; /* a wall: the side it lies on */
+                dy = facing[3 * j + 1];
+            }
             if (fabs(dx) >= fabs(dy))
                 sect |= dx > 0 ? 1u : 2u;
             else

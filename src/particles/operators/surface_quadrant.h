@@ -17,12 +17,16 @@ struct neighbour_list;
  * width `half_width` along those directions hold one within `radius`
  * (column test). A neighbour j counts when counts[j] != 0 (counts NULL:
  * every particle of the list, walls included; a solver leaves out the
- * wall particles above the water). flag[i] = 1 surface, 0 not, untouched
+ * wall particles above the water). With `facing` (x, y at 3 j; NULL: none),
+ * a neighbour j whose facing[j] is not zero occupies the sector and column
+ * of that direction instead of those of its position (a wall particle's
+ * normal into the solid: the wall lies on that side of the water).
+ * flag[i] = 1 surface, 0 not, untouched
  * where rows[i] == 0; flag may be rows.
  * The list's radius must be at least `radius`. 2-D (x, y of x[3 i]). */
 void pop_surface_quadrant(const struct neighbour_list *nl, const double *x,
                           double radius, double half_width,
                           const uint8_t *rows, const uint8_t *counts,
-                          uint8_t *flag);
+                          const double *facing, uint8_t *flag);
 
 #endif

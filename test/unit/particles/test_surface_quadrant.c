@@ -4,7 +4,8 @@
  * lattice, spacing 1, 40 x 20 water nodes inside one layer of wall nodes,
  * open top) exactly the top row of water is flagged (the E4-10 check at
  * t = 0), also with the water jittered by +-0.1 spacing; a drop (a disc
- * of water in the air) is flagged on its rim only, not in its interior.
+ * of water in the air) is flagged on its rim only, not in its interior;
+ * walls given a facing direction occupy its quadrant (a surge's tip).
  */
 #include <setjmp.h>
 #include <stdarg.h>
@@ -44,7 +45,7 @@ static void tank(double jitter)
     flag = calloc((size_t)n, 1);
     struct neighbour_list nl = { 0 };
     assert_int_equal(neighbour_build_brute(&nl, 2, x, n, 2.5), 0);
-    pop_surface_quadrant(&nl, x, 2.5, 0.4, water, NULL, flag);
+    pop_surface_quadrant(&nl, x, 2.5, 0.4, water, NULL, NULL, flag);
     int wrong = 0, flagged = 0;
     for (int a = 0; a < n; a++) {
         if (!water[a])
@@ -82,7 +83,7 @@ static void test_drop(void **state)
     uint8_t flag[400];
     struct neighbour_list nl = { 0 };
     assert_int_equal(neighbour_build_brute(&nl, 2, x, n, 2.5), 0);
-    pop_surface_quadrant(&nl, x, 2.5, 0.4, NULL, NULL, flag);
+    pop_surface_quadrant(&nl, x, 2.5, 0.4, NULL, NULL, NULL, flag);
     for (int a = 0; a < n; a++) {
         double r = hypot(x[3 * a], x[3 * a + 1]);
         if (r < 6.5)
@@ -93,11 +94,49 @@ static void test_drop(void **state)
     neighbour_free(&nl);
 }
 
+/* The tip of a surge: two rows of water (x = 0..5, y = 1, 2) on a floor
+ * of wall nodes (y = 0, x = -3..12). By position, the floor ahead of the
+ * tip fills the tip's eastern quadrant (dx 1, dy -1 lies on the sector's
+ * edge, dx 2, dy -1 inside it) and the bottom tip node is not on the
+ * surface; with the floor facing down (its normal into the solid), it
+ * occupies the southern quadrant and column only, and the bottom tip
+ * node is on the surface, the nodes behind it not. */
+static void test_facing_walls(void **state)
+{
+    (void)state;
+    double x[3 * 64] = { 0 }, facing[3 * 64] = { 0 };
+    uint8_t water[64] = { 0 }, flag[64];
+    int n = 0, tip = -1, behind = -1;
+    for (int i = -3; i <= 12; i++, n++) {
+        x[3 * n] = i;
+        facing[3 * n + 1] = -1;
+    }
+    for (int j = 1; j <= 2; j++)
+        for (int i = 0; i <= 5; i++, n++) {
+            x[3 * n] = i;
+            x[3 * n + 1] = j;
+            water[n] = 1;
+            if (j == 1 && i == 5)
+                tip = n;
+            if (j == 1 && i == 2)
+                behind = n;
+        }
+    struct neighbour_list nl = { 0 };
+    assert_int_equal(neighbour_build_brute(&nl, 2, x, n, 2.5), 0);
+    pop_surface_quadrant(&nl, x, 2.5, 0.4, water, NULL, NULL, flag);
+    assert_int_equal(flag[tip], 0);
+    pop_surface_quadrant(&nl, x, 2.5, 0.4, water, NULL, facing, flag);
+    assert_int_equal(flag[tip], 1);
+    assert_int_equal(flag[behind], 0);
+    neighbour_free(&nl);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_still_tank),
         cmocka_unit_test(test_drop),
+        cmocka_unit_test(test_facing_walls),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
