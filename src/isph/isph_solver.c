@@ -43,13 +43,13 @@ static const struct model_head *const drag_step_table[] = { &drag_ex, &drag_si,
 static const struct model_head wall_neu = { "neumann",
     "one layer, n.grad p = (rho/dt) n.(u* - U), Pan 2022 eq. 5.31" };
 static const struct model_head wall_dum = { "dummyLayers",
-    "walls in the PPE as water, dummy layers behind, doc/theory.md S0-13" };
+    "wall and dummy layers, pressure extrapolated (Adami 2012), doc S0-13" };
 static const struct model_head *const wall_table[] = { &wall_neu, &wall_dum,
                                                        NULL };
 static const struct model_head surf_q = { "quadrant",
     "occupied quadrants and columns, Pan 2022 eqs. 5.32-5.33" };
 static const struct model_head surf_d = { "positionDivergence",
-    "quadrant, or div r < 1.5 (Lee et al. 2008), doc/theory.md S0-14" };
+    "quadrant, or div r < 1.6 (Lee et al. 2008), doc/theory.md S0-14" };
 static const struct model_head *const surface_table[] = { &surf_q, &surf_d,
                                                           NULL };
 static const struct model_head shift_none = { "none",
@@ -242,7 +242,8 @@ int isph_solver_init(struct isph_solver *s, const struct isph_settings *S,
         || !ALLOC(aflux, 1) || !ALLOC(aw, 2) || !ALLOC(gp, 2) || !ALLOC(w, 2)
         || !ALLOC(divu, 1) || !ALLOC(Tf, 3) || !ALLOC(Ts, 3)
         || !ALLOC(acc_f, 2) || !ALLOC(acc_s, 2) || !ALLOC(gamma, 1)
-        || !ALLOC(rows, 1) || !ALLOC(isolated, 1) || !ALLOC(anchor, 1))
+        || !ALLOC(rows, 1) || !ALLOC(isolated, 1) || !ALLOC(anchor, 1)
+        || !ALLOC(drag_f, 2))
         return SIM_ERR_NOMEM;
 #undef ALLOC
     for (int i = 0; i < s->n; i++)
@@ -484,8 +485,10 @@ static int assemble(struct isph_solver *s, double dt)
         }
         if (s->type[a] != ISPH_FLUID && s->S.wall == ISPH_WALL_DUMMY) {
             /* the water's pressure extrapolated (Adami et al. 2012 eq.
-             * 27, U = 0): p_a = sum_f W_af (p_f + rho g.(x_a - x_f))
-             * / sum_f W_af over the water f in reach */
+             * 27, U = 0): p_a = sum_f W_af (p_f + rho (g + d_f).(x_a -
+             * x_f)) / sum_f W_af over the water f in reach, d_f the
+             * drag's acceleration of f's water (the grains' weight that
+             * the water's pressure carries) */
             double ws = 0, gr = 0;
             for (int k = 0; k < m; k++) {
                 int f = nl->j[k0 + k];
@@ -495,8 +498,10 @@ static int assemble(struct isph_solver *s, double dt)
                 double wk = s->S.kernel->w(r, s->S.h);
                 A->val[e + 1 + k] = -wk;
                 ws += wk;
-                gr += wk * (s->S.g[0] * (s->x[3 * a] - s->x[3 * f])
-                            + s->S.g[1] * (s->x[3 * a + 1] - s->x[3 * f + 1]));
+                const double *df = s->drag_f + 2 * f;
+                gr += wk * ((s->S.g[0] + df[0]) * (s->x[3 * a] - s->x[3 * f])
+                            + (s->S.g[1] + df[1])
+                              * (s->x[3 * a + 1] - s->x[3 * f + 1]));
             }
             A->val[e] = 1;
             if (ws > 0) {
@@ -582,9 +587,11 @@ static void clip_negative(struct isph_solver *s)
     for (int a = 0; a < s->n; a++)
         if (s->type[a] == ISPH_FLUID)
             s->p[a] = fmax(s->p[a], 0);
+    if (s->S.wall != ISPH_WALL_DUMMY) /* Neumann rows are not evaluations */
+        return;
     for (int pass = ISPH_WALL; pass <= ISPH_DUMMY; pass++)
         for (int a = 0; a < s->n; a++) {
-            if (s->type[a] != pass || s->S.wall != ISPH_WALL_DUMMY)
+            if (s->type[a] != pass)
                 continue;
             double v = s->b[a];
             for (int64_t e = A->rowptr[a] + 1; e < A->rowptr[a + 1]; e++)
@@ -644,8 +651,8 @@ static void keep_off_walls(struct isph_solver *s)
 
 /* freeSurface positionDivergence (S0-14): a water particle whose
  * div r = sum_b V_b (x_b - x_a).grad W_ab (2 inside the water in 2-D,
- * about 1 on the surface) is below 1.5 is on the surface too (Lee et al.
- * 2008): it catches the thin tongues and stretched layers of a fast flow
+ * about 1 on the surface) is below 1.6 is on the surface too (after Lee
+ * et al. 2008): it catches the thin tongues and stretched layers of a fast flow
  * whose four quadrants the walls and a few neighbours fill. */
 static void divergence_surface(struct isph_solver *s)
 {
@@ -702,9 +709,11 @@ int isph_step(struct isph_solver *s, double dt)
             w[0] = wq[0];
             w[1] = wq[1];
         }
-        for (int q = 0; q < 2; q++)
+        for (int q = 0; q < 2; q++) {
+            s->drag_f[2 * a + q] = kf * w[q];
             us[q] = s->u[3 * a + q] + dt * (s->acc_f[2 * a + q] + S->g[q]
                                             + kf * w[q]);
+        }
     }
     if (S->collision == ISPH_COLLISION_LEE2011) /* x0: work, set below */
         pop_collision(&s->nl, s->x, s->type, NULL, S->collision_ratio * S->dl,
@@ -790,7 +799,7 @@ void isph_solver_free(struct isph_solver *s)
     free(s->gus), free(s->aflux), free(s->aw), free(s->gp), free(s->w),
         free(s->divu), free(s->Tf), free(s->Ts);
     free(s->acc_f), free(s->acc_s), free(s->gamma), free(s->rows);
-    free(s->isolated), free(s->anchor);
+    free(s->isolated), free(s->anchor), free(s->drag_f);
     cells_free(&s->grid);
     neighbour_free(&s->nl);
     csr_free(&s->A);

@@ -37,9 +37,10 @@
  *                them (type 2; wallLayers 3 in system/particleDict) are
  *                full neighbours, and their pressure is the water's
  *                extrapolated (Adami et al. 2012 eq. 27, U = 0): p_w =
- *                sum_f W_wf (p_f + rho_f g.(x_w - x_f)) / sum_f W_wf over
- *                the water f in reach, one row of the same matrix. A dummy
- *                out of the water's reach takes its nearest wall
+ *                sum_f W_wf (p_f + rho_f (g + d_f).(x_w - x_f)) / sum_f
+ *                W_wf over the water f in reach, d_f the drag's
+ *                acceleration of f's water, one row of the same matrix.
+ *                A dummy out of the water's reach takes its nearest wall
  *                particle's p plus hydrostatics and is dry with it.
  */
 #ifndef MPSDEM_ISPH_ISPH_SOLVER_H
@@ -115,6 +116,8 @@ struct isph_solver {
     double *w;                   /* the relative velocity u_s - u_f that the
                                     drag acts on, 2 per particle (S0-07)   */
     double *gu, *gus, *divu, *Tf, *Ts, *acc_f, *acc_s, *gamma;
+    double *drag_f;              /* the drag's acceleration of the water,
+                                    k_f w (2 per particle; 0 on walls)     */
     uint8_t *rows;               /* 1: water, wet wall (isph_cloud.active)   */
     int *anchor;                 /* a dummy's nearest wall particle, else -1 */
     uint8_t *isolated;           /* 1: singular corrections (isph.h): a
