@@ -64,6 +64,13 @@ static const struct model_head coll_lee = { "lee2011",
     "Lee et al. 2011 collisions on u*, doc/theory.md S0-16" };
 static const struct model_head *const collision_table[] = { &coll_none,
                                                             &coll_lee, NULL };
+static const struct model_head smooth_none = { "none",
+    "velocities as updated (Pan 2022)" };
+static const struct model_head smooth_shep = { "shepard",
+    "u <- (1 - eps) u + eps <u>, kernel mean, doc/theory.md S0-18" };
+static const struct model_head *const smoothing_table[] = { &smooth_none,
+                                                            &smooth_shep,
+                                                            NULL };
 const struct model_choice isph_solver_choices[] = {
     { "system/isphSchemes", "kernel", (const void *const *)isph_kernels },
     { "system/isphSchemes", "laplacian", (const void *const *)norm_table },
@@ -74,6 +81,8 @@ const struct model_choice isph_solver_choices[] = {
     { "system/isphSchemes", "shifting", (const void *const *)shift_table },
     { "system/isphSchemes", "collision",
       (const void *const *)collision_table },
+    { "system/isphSchemes", "velocitySmoothing",
+      (const void *const *)smoothing_table },
     { NULL, NULL, NULL },
 };
 
@@ -134,8 +143,14 @@ int isph_settings_read(const struct dict *transport,
                    1));
     TRY(dict_get_scalar_or(schemes, "collisionRestitution", 0.2,
                            &S->collision_e));
-    return dict_range(schemes, "collisionRestitution", S->collision_e, 0, 1,
-                      0);
+    TRY(dict_range(schemes, "collisionRestitution", S->collision_e, 0, 1, 0));
+    TRY(model_select_index(schemes, "velocitySmoothing", "velocity smoothing",
+                           (const void *const *)smoothing_table, "none",
+                           &S->smoothing));
+    TRY(dict_get_scalar_or(schemes, "velocitySmoothingCoefficient", 0.2,
+                           &S->smoothing_eps));
+    return dict_range(schemes, "velocitySmoothingCoefficient",
+                      S->smoothing_eps, 0, 1, 0);
 }
 
 int isph_fields_alloc(struct isph_solver *s, int n)
@@ -575,6 +590,47 @@ static int assemble(struct isph_solver *s, double dt)
     return SIM_OK;
 }
 
+/* velocitySmoothing shepard (S0-18): u <- (1 - eps) u + eps <u>, <u> the
+ * kernel (Shepard) mean over the water in reach, for the water and the
+ * sediment after the update. The mean averages a row-to-row checkerboard
+ * away, which the corrected divergence of the pressure equation is blind
+ * to and which in a suspension grows from the bed and the surface
+ * (doc/theory.md S0-18). Uniform and linear
+ * fields inside the water are kept; still water stays still. */
+static void smooth_velocities(struct isph_solver *s)
+{
+    const double reach = s->S.kernel->support * s->S.h;
+    const double eps = s->S.smoothing_eps;
+    double *tmp = s->ustar; /* free after the update */
+    for (int pass = 0; pass < 2; pass++) {
+        double *f = pass ? s->us : s->u;
+#pragma omp parallel for schedule(static)
+        for (int a = 0; a < s->n; a++) {
+            double m[2] = { 0, 0 }, ws = 0;
+            if (s->type[a] == ISPH_FLUID)
+                for (int64_t k = s->nl.start[a]; k < s->nl.start[a + 1];
+                     k++) {
+                    int b = s->nl.j[k];
+                    double r = s->nl.r[k];
+                    if (s->type[b] != ISPH_FLUID || !(s->V[b] > 0)
+                        || r >= reach)
+                        continue;
+                    double wk = s->V[b] * s->S.kernel->w(r, s->S.h);
+                    m[0] += wk * f[3 * b];
+                    m[1] += wk * f[3 * b + 1];
+                    ws += wk;
+                }
+            for (int q = 0; q < 2; q++)
+                tmp[3 * a + q] = ws > 0 ? (1 - eps) * f[3 * a + q]
+                                          + eps * m[q] / ws
+                                        : f[3 * a + q];
+        }
+        for (int a = 0; a < s->n; a++)
+            for (int q = 0; q < 2; q++)
+                f[3 * a + q] = tmp[3 * a + q];
+    }
+}
+
 /* clipNegativePressure (S0-17): the water's p < 0 set to 0, then the
  * walls' and dummies' rows (their pressure extrapolated from the water,
  * unit diagonal) evaluated again with it, walls first: above the
@@ -769,6 +825,8 @@ int isph_step(struct isph_solver *s, double dt)
         s->dalpha_f[a] = as - s->anew[a]; /* the next step's (5.24) */
         s->alpha[a] = s->anew[a];
     }
+    if (S->smoothing == ISPH_SMOOTHING_SHEPARD)
+        smooth_velocities(s);
     /* r^(n+1) once every gradient at r* is taken (5.26) */
     for (int a = 0; a < n; a++)
         if (s->type[a] == ISPH_FLUID)

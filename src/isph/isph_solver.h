@@ -79,6 +79,8 @@ struct isph_settings {
     int clip_negative;           /* 1: p < 0 set to 0 after the solve (S0-17) */
     int collision;               /* enum isph_collision (S0-16)            */
     double collision_ratio, collision_e; /* lee2011: distance [dl], e      */
+    int smoothing;               /* enum isph_smoothing (S0-18)            */
+    double smoothing_eps;        /* shepard: eps per step                  */
 };
 
 enum isph_flux { ISPH_FLUX_ADVECTIVE, ISPH_FLUX_CONSERVATIVE, ISPH_FLUX_UPWIND };
@@ -87,6 +89,7 @@ enum isph_wall { ISPH_WALL_NEUMANN, ISPH_WALL_DUMMY };
 enum isph_surface { ISPH_SURFACE_QUADRANT, ISPH_SURFACE_DIVERGENCE };
 enum isph_shift { ISPH_SHIFT_NONE, ISPH_SHIFT_LIND2012 };
 enum isph_collision { ISPH_COLLISION_NONE, ISPH_COLLISION_LEE2011 };
+enum isph_smoothing { ISPH_SMOOTHING_NONE, ISPH_SMOOTHING_SHEPARD };
 
 /* freeSurface positionDivergence: surface below this div r (2 inside
  * the water in 2-D; Lee et al. 2008 take 1.5, S0-14 says why 1.6) */

@@ -31,8 +31,9 @@
 #     (measured -0.09, -0.08, -0.07, -0.06 %), explicit and semi-implicit
 #     drag
 #   the options for fast flows (wall dummyLayers, freeSurface
-#     positionDivergence, shifting, collision, clipNegativePressure; S0-13
-#     to S0-17) on case 1a with wallLayers 3: still water stays at rest
+#     positionDivergence, shifting, collision, clipNegativePressure,
+#     velocitySmoothing; S0-13 to S0-18) on case 1a with wallLayers 3:
+#     still water stays at rest
 #     (pressure L2 < 1e-9, displacement < 1e-6 dl; measured 1e-12)
 #   the dam break (tutorials/isphSediment/damBreak) at a/10, 0.6 s: RMS of
 #     the front < 0.35 (measured 0.27), of the column height < 0.05 (0.03)
@@ -195,6 +196,7 @@ set_entry system/particleDict wallLayers 3
 for k in wall freeSurface shifting shiftingCoefficient collision collisionDistance collisionRestitution clipNegativePressure; do
     set_entry system/isphSchemes "$k" "$("$ROOT/bin/dictTool" "$DB/system/isphSchemes" -entry "$k" | tr -d ';')"
 done
+set_entry system/isphSchemes velocitySmoothing shepard
 if out=$(cd "$c" && ./Allrun 1a 2>&1); then
     r=$(echo "$out" | tail -n 1)
     echo "    1a, dam-break options: $r"
