@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # isph.sh — isphSediment on its tutorials (tutorials/isphSediment; doc/
-# theory.md S, checks E.4; ~50 s):
+# theory.md S, checks E.4; ~100 s):
 #   neutral buoyancy, cases 1a (alpha_s = 0.1) and 1b (alpha_s = 0.5 (1 -
 #     y)), dl = 0.02 m, 1.5 s (E4-04): pressure L2 against rho g (H - y)
 #     < 1 % (measured 2e-12 / 8e-13: hydrostatics is exact), largest
@@ -37,6 +37,9 @@
 #     (pressure L2 < 1e-9, displacement < 1e-6 dl; measured 1e-12)
 #   the dam break (tutorials/isphSediment/damBreak) at a/10, 0.6 s: RMS of
 #     the front < 0.35 (measured 0.27), of the column height < 0.05 (0.03)
+#   the sand dumping case 2 (tutorials/isphSediment/sandDumping) at dl =
+#     0.02 m, 1 s: front velocity within 40 % of omega_s (E4-12; 0.604
+#     m/s), sediment volume kept (0)
 #   bad input: an unknown kernel (file:line, did you mean), a smoothing
 #     length whose support misses the free-surface detector's reach, no
 #     constant/sedimentProperties, dummy particles with wall neumann, wall
@@ -222,6 +225,25 @@ if out=$(cd "$c" && ./Allrun 2>&1); then
         && pass isph_damBreak || fail isph_damBreak "rmsZ $z rmsH $h"
 else
     fail isph_damBreak "$(echo "$out" | tail -n 2 | tr '\n' ' ')"
+fi
+
+# --- sand dumping (tutorials/isphSediment/sandDumping), case 2 (d = 5 mm)
+# at dl = 0.02 m to 1 s: the cloud's front velocity omega_c averaged over
+# 0.6-1 s within 40 % of the single grain's 0.4952 m/s (E4-12; measured
+# 0.604 m/s, +22 %), the sediment volume sum alpha_s V kept to 1e-9
+# (upwind flux; measured 0) ---
+setcase sandDumping "$ROOT/tutorials/isphSediment/sandDumping"
+set_entry system/particleDict dp 0.02
+set_entry system/controlDict endTime 1
+if out=$(cd "$c" && ./Allrun 2 2>&1); then
+    r=$(awk '!/^#/ && $1 >= 0.6 && $1 <= 1.0001 { w += $4; n++ } !/^#/ { if (!v0) v0 = $6; dv = $6 / v0 - 1; if (dv < 0) dv = -dv; if (dv > e) e = dv }
+             END { if (n) printf "%.4f %.2e", w / n, e }' "$c/validation/series_case2.dat")
+    set -- $r
+    echo "    sand dumping case 2, dl = 0.02 m: omega_c $1 m/s over 0.6-1 s (omega_s 0.4952), volume change $2"
+    awk -v w="$1" -v e="$2" 'BEGIN { exit !(w != "" && w > 0.6 * 0.4952 && w < 1.4 * 0.4952 && e < 1e-9) }' \
+        && pass isph_sandDumping_case2 || fail isph_sandDumping_case2 "omega_c $1, volume change $2"
+else
+    fail isph_sandDumping_case2 "$(echo "$out" | tail -n 2 | tr '\n' ' ')"
 fi
 
 # --- bad input ---
