@@ -61,11 +61,14 @@ struct isph_cloud {
     uint8_t *isolated;        /* NULL: a singular L_a is an error; else  */
                               /* 1 where it is (L_a, c_a, S_a zero)      */
     long n_isolated;          /* how many, with `isolated`               */
+    double *divr;             /* NULL, or div r = sum_b V_b (x_b - x_a).  */
+                              /* grad W_ab (free-surface test, S0-14)    */
 };
 
-/* L_a, c_a and S_a of every (active) particle. Where L_a^-1 or Gamma_a is
- * singular (fewer than two independent neighbours in the support: a
- * particle thrown off the free surface), SIM_ERR_NUMERIC naming the
+/* L_a, c_a and S_a (and div r with `divr`) of every (active) particle.
+ * Where L_a^-1 or Gamma_a is singular (fewer than two independent
+ * neighbours in the support: a particle thrown off the free surface),
+ * SIM_ERR_NUMERIC naming the
  * particle, or with `isolated` the particle is flagged and its operators
  * are zero (no gradient, no Laplacian: it flies on its own). */
 int isph_corrections(struct isph_cloud *c);

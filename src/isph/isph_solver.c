@@ -258,7 +258,7 @@ int isph_solver_init(struct isph_solver *s, const struct isph_settings *S,
         || !ALLOC(divu, 1) || !ALLOC(Tf, 3) || !ALLOC(Ts, 3)
         || !ALLOC(acc_f, 2) || !ALLOC(acc_s, 2) || !ALLOC(gamma, 1)
         || !ALLOC(rows, 1) || !ALLOC(isolated, 1) || !ALLOC(anchor, 1)
-        || !ALLOC(drag_f, 2))
+        || !ALLOC(divr, 1))
         return SIM_ERR_NOMEM;
 #undef ALLOC
     for (int i = 0; i < s->n; i++)
@@ -284,10 +284,19 @@ int isph_solver_init(struct isph_solver *s, const struct isph_settings *S,
                                  .nl = &s->nl, .kernel = S->kernel,
                                  .active = s->rows, .h = S->h,
                                  .norm = S->norm, .L = s->L, .c = s->c,
-                                 .S = s->Sv, .isolated = s->isolated };
+                                 .S = s->Sv, .isolated = s->isolated,
+                                 .divr = S->surface == ISPH_SURFACE_DIVERGENCE
+                                       ? s->divr : NULL };
     TRY(build_list(s));
     find_anchors(s);
     return prepare(s);
+}
+
+/* k_f = gamma alpha_s/(alpha_f rho_f): the drag's acceleration of a
+ * particle's water is k_f w (5.19), w = u_s - u_f of the step (S0-07). */
+static double drag_rate(const struct isph_solver *s, int a)
+{
+    return s->gamma[a] * s->alpha[a] / ((1 - s->alpha[a]) * s->S.rho_f);
 }
 
 /* nu_s^0 (5.7), capped at 0.95 alpha_sm (D-02). */
@@ -513,9 +522,10 @@ static int assemble(struct isph_solver *s, double dt)
                 double wk = s->S.kernel->w(r, s->S.h);
                 A->val[e + 1 + k] = -wk;
                 ws += wk;
-                const double *df = s->drag_f + 2 * f;
-                gr += wk * ((s->S.g[0] + df[0]) * (s->x[3 * a] - s->x[3 * f])
-                            + (s->S.g[1] + df[1])
+                double kf = drag_rate(s, f);
+                const double *wf = s->w + 2 * f;
+                gr += wk * ((s->S.g[0] + kf * wf[0]) * (s->x[3 * a] - s->x[3 * f])
+                            + (s->S.g[1] + kf * wf[1])
                               * (s->x[3 * a + 1] - s->x[3 * f + 1]));
             }
             A->val[e] = 1;
@@ -705,27 +715,16 @@ static void keep_off_walls(struct isph_solver *s)
     s->n_pushed += pushed;
 }
 
-/* freeSurface positionDivergence (S0-14): a water particle whose
- * div r = sum_b V_b (x_b - x_a).grad W_ab (2 inside the water in 2-D,
- * about 1 on the surface) is below 1.6 is on the surface too (after Lee
- * et al. 2008): it catches the thin tongues and stretched layers of a fast flow
- * whose four quadrants the walls and a few neighbours fill. */
+/* freeSurface positionDivergence (S0-14): a water particle whose div r
+ * (2 inside the water in 2-D, about 1 on the surface; isph_corrections
+ * sums it) is below 1.6 is on the surface too (after Lee et al. 2008): it
+ * catches the thin tongues and stretched layers of a fast flow whose four
+ * quadrants the walls and a few neighbours fill. */
 static void divergence_surface(struct isph_solver *s)
 {
-    const double reach = s->S.kernel->support * s->S.h;
-#pragma omp parallel for schedule(static)
-    for (int a = 0; a < s->n; a++) {
-        if (s->type[a] != ISPH_FLUID || !s->rows[a] || s->fs[a])
-            continue;
-        double dr = 0;
-        for (int64_t k = s->nl.start[a]; k < s->nl.start[a + 1]; k++) {
-            int b = s->nl.j[k];
-            double r = s->nl.r[k];
-            if (b != a && r > 0 && r < reach && s->V[b] > 0)
-                dr -= s->V[b] * s->S.kernel->dw(r, s->S.h) * r;
-        }
-        s->fs[a] = dr < ISPH_SURFACE_DIV_R;
-    }
+    for (int a = 0; a < s->n; a++)
+        if (s->type[a] == ISPH_FLUID && s->rows[a])
+            s->fs[a] |= s->divr[a] < ISPH_SURFACE_DIV_R;
 }
 
 int isph_step(struct isph_solver *s, double dt)
@@ -748,8 +747,7 @@ int isph_step(struct isph_solver *s, double dt)
             continue;
         }
         /* drag -F/(alpha_f rho_f), F = gamma alpha_s (u_f - u_s) */
-        double kf = s->gamma[a] * s->alpha[a]
-                  / ((1 - s->alpha[a]) * S->rho_f);
+        double kf = drag_rate(s, a);
         double ks = s->gamma[a] / S->rho_s, *w = s->w + 2 * a;
         const double *gs = s->gus + 4 * a, *gp = s->gp + 2 * a;
         for (int q = 0; q < 2; q++)
@@ -765,11 +763,9 @@ int isph_step(struct isph_solver *s, double dt)
             w[0] = wq[0];
             w[1] = wq[1];
         }
-        for (int q = 0; q < 2; q++) {
-            s->drag_f[2 * a + q] = kf * w[q];
+        for (int q = 0; q < 2; q++)
             us[q] = s->u[3 * a + q] + dt * (s->acc_f[2 * a + q] + S->g[q]
                                             + kf * w[q]);
-        }
     }
     if (S->collision == ISPH_COLLISION_LEE2011) /* x0: work, set below */
         pop_collision(&s->nl, s->x, s->type, NULL, S->collision_ratio * S->dl,
@@ -857,7 +853,7 @@ void isph_solver_free(struct isph_solver *s)
     free(s->gus), free(s->aflux), free(s->aw), free(s->gp), free(s->w),
         free(s->divu), free(s->Tf), free(s->Ts);
     free(s->acc_f), free(s->acc_s), free(s->gamma), free(s->rows);
-    free(s->isolated), free(s->anchor), free(s->drag_f);
+    free(s->isolated), free(s->anchor), free(s->divr);
     cells_free(&s->grid);
     neighbour_free(&s->nl);
     csr_free(&s->A);

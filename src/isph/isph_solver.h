@@ -119,10 +119,9 @@ struct isph_solver {
     double *w;                   /* the relative velocity u_s - u_f that the
                                     drag acts on, 2 per particle (S0-07)   */
     double *gu, *gus, *divu, *Tf, *Ts, *acc_f, *acc_s, *gamma;
-    double *drag_f;              /* the drag's acceleration of the water,
-                                    k_f w (2 per particle; 0 on walls)     */
     uint8_t *rows;               /* 1: water, wet wall (isph_cloud.active)   */
     int *anchor;                 /* a dummy's nearest wall particle, else -1 */
+    double *divr;                /* div r (isph_cloud.divr)                 */
     uint8_t *isolated;           /* 1: singular corrections (isph.h): a
                                     water particle has p = 0 and no
                                     gradients, a wall particle is dry     */
