@@ -63,9 +63,12 @@ struct isph_cloud {
     long n_isolated;          /* how many, with `isolated`               */
     double *divr;             /* NULL, or div r = sum_b V_b (x_b - x_a).  */
                               /* grad W_ab (free-surface test, S0-14)    */
+    double *theta;            /* NULL, or the kernel sum sum_b V_b W_ab,  */
+                              /* a included (volumeRelaxation, S0-19)    */
 };
 
-/* L_a, c_a and S_a (and div r with `divr`) of every (active) particle.
+/* L_a, c_a and S_a (and div r, theta with `divr`, `theta`) of every
+ * (active) particle.
  * Where L_a^-1 or Gamma_a is singular (fewer than two independent
  * neighbours in the support: a particle thrown off the free surface),
  * SIM_ERR_NUMERIC naming the

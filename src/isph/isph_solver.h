@@ -80,16 +80,26 @@ struct isph_settings {
     int collision;               /* enum isph_collision (S0-16)            */
     double collision_ratio, collision_e; /* lee2011: distance [dl], e      */
     int smoothing;               /* enum isph_smoothing (S0-18)            */
-    double smoothing_eps;        /* shepard: eps per step                  */
+    double smoothing_eps;        /* eps per step                           */
+    double volume_beta;          /* volumeRelaxation (S0-19), 0: off       */
 };
 
-enum isph_flux { ISPH_FLUX_ADVECTIVE, ISPH_FLUX_CONSERVATIVE, ISPH_FLUX_UPWIND };
+enum isph_flux { /* the pairwise ones last (>= ISPH_FLUX_UPWIND) */
+    ISPH_FLUX_ADVECTIVE,
+    ISPH_FLUX_CONSERVATIVE,
+    ISPH_FLUX_UPWIND,
+    ISPH_FLUX_MUSCL
+};
 enum isph_drag { ISPH_DRAG_EXPLICIT, ISPH_DRAG_SEMI_IMPLICIT };
 enum isph_wall { ISPH_WALL_NEUMANN, ISPH_WALL_DUMMY };
 enum isph_surface { ISPH_SURFACE_QUADRANT, ISPH_SURFACE_DIVERGENCE };
 enum isph_shift { ISPH_SHIFT_NONE, ISPH_SHIFT_LIND2012 };
 enum isph_collision { ISPH_COLLISION_NONE, ISPH_COLLISION_LEE2011 };
-enum isph_smoothing { ISPH_SMOOTHING_NONE, ISPH_SMOOTHING_SHEPARD };
+enum isph_smoothing {
+    ISPH_SMOOTHING_NONE,
+    ISPH_SMOOTHING_SHEPARD,
+    ISPH_SMOOTHING_BIHARMONIC
+};
 
 /* freeSurface positionDivergence: surface below this div r (2 inside
  * the water in 2-D; Lee et al. 2008 take 1.5, S0-14 says why 1.6) */
@@ -114,7 +124,8 @@ struct isph_solver {
     double *dalpha_f;            /* alpha_f^n - alpha_f^(n-1) (5.24)       */
     double *anew;                /* alpha_s^(n+1) (5.28)                   */
     double *aflux;               /* the sediment flux term of (5.28) at n  */
-    double *aw;                  /* alpha_s (u_s - u_f) at n, 2 per particle */
+    double *aw;                  /* at n, 2 per particle: alpha_s (u_s - u_f)
+                                    (conservative), grad alpha_s (muscl)  */
     double *gp;                  /* grad p^n at r^n (semi-implicit drag)    */
     double *w;                   /* the relative velocity u_s - u_f that the
                                     drag acts on, 2 per particle (S0-07)   */
@@ -122,6 +133,9 @@ struct isph_solver {
     uint8_t *rows;               /* 1: water, wet wall (isph_cloud.active)   */
     int *anchor;                 /* a dummy's nearest wall particle, else -1 */
     double *divr;                /* div r (isph_cloud.divr)                 */
+    double *theta;               /* kernel sum (isph_cloud.theta)           */
+    double theta_ref;            /* its value inside the start lattice      */
+    double flux_scale;           /* 2/div r of that lattice (upwind, S0-09) */
     uint8_t *isolated;           /* 1: singular corrections (isph.h): a
                                     water particle has p = 0 and no
                                     gradients, a wall particle is dry     */

@@ -27,7 +27,7 @@ int isph_corrections(struct isph_cloud *c)
     long isolated = 0;
 #pragma omp parallel for schedule(static) reduction(+ : isolated)
     for (int a = 0; a < c->n; a++) {
-        double Li[4] = { 0 }, G[4] = { 0 }, S[2] = { 0 }, dr = 0;
+        double Li[4] = { 0 }, G[4] = { 0 }, S[2] = { 0 }, dr = 0, th = 0;
         if (c->isolated)
             c->isolated[a] = 0;
         if (c->active && !c->active[a])
@@ -41,6 +41,8 @@ int isph_corrections(struct isph_cloud *c)
             double V = c->V[b], F = (dx[0] * gw[0] + dx[1] * gw[1]) / (r * r);
             if (c->divr)
                 dr -= V * c->kernel->dw(r, c->h) * r;
+            if (c->theta)
+                th += V * c->kernel->w(r, c->h);
             for (int p = 0; p < 2; p++) {
                 S[p] += V * gw[p];
                 for (int q = 0; q < 2; q++) {
@@ -51,6 +53,8 @@ int isph_corrections(struct isph_cloud *c)
         }
         if (c->divr)
             c->divr[a] = dr;
+        if (c->theta)
+            c->theta[a] = th + c->V[a] * c->kernel->w(0, c->h);
         double det = Li[0] * Li[3] - Li[1] * Li[2];
         double dg = G[0] * G[3] - G[1] * G[2], tr = G[0] + G[3];
         double *L = c->L + 4 * a;

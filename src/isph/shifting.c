@@ -8,8 +8,11 @@
  *   dr_a     = -A h^2 grad C_a                     (inside the water)
  *   dr_a     = -A h^2 (I - n n) grad C_a           (on or next to the surface)
  *
- * over the water, wall and dummy neighbours (dry ones too, at V = dl^2: a
- * particle at the waterline is not drawn into the wall above the water),
+ * over the water, wall and dummy neighbours (dry ones too: a particle at
+ * the waterline is not drawn into the wall above the water); a wall or
+ * dummy counts at the particle's own V_a, a mirror of it: with dl^2 the
+ * swollen particles of a settled bed (V = m_f/(alpha_f rho_f) > dl^2)
+ * were drawn into the floor,
  * n = -grad C/|grad C| the surface normal; capped at 0.1 dl a step. The
  * divergence-only pressure equation of (5.24) keeps div u = 0 but not the
  * spacing: without shifting the particles of a fast flow (a dam break)
@@ -30,7 +33,7 @@ void isph_shift(struct isph_solver *s)
 {
     const struct isph_settings *S = &s->S;
     const double reach = S->kernel->support * S->h;
-    const double D = S->shift_coeff * S->h * S->h, V0 = S->dl * S->dl;
+    const double D = S->shift_coeff * S->h * S->h;
     double *dr = s->x0; /* r^n, free once r^(n+1) is set */
 #pragma omp parallel for schedule(static)
     for (int a = 0; a < s->n; a++) {
@@ -46,7 +49,8 @@ void isph_shift(struct isph_solver *s)
                                  s->x[3 * b + 1] - s->x[3 * a + 1]);
                 if (!(r > 0) || r >= reach)
                     continue;
-                double dx[2], gw[2], V = s->V[b] > 0 ? s->V[b] : V0;
+                double dx[2], gw[2];
+                double V = s->type[b] == ISPH_FLUID ? s->V[b] : s->V[a];
                 isph_kernel_gradient(&s->cl, a, b, r, dx, gw);
                 G[0] += V * gw[0];
                 G[1] += V * gw[1];

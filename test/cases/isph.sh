@@ -32,9 +32,17 @@
 #     drag
 #   the options for fast flows (wall dummyLayers, freeSurface
 #     positionDivergence, shifting, collision, clipNegativePressure,
-#     velocitySmoothing; S0-13 to S0-18) on case 1a with wallLayers 3:
-#     still water stays at rest
-#     (pressure L2 < 1e-9, displacement < 1e-6 dl; measured 1e-12)
+#     velocitySmoothing, volumeRelaxation; S0-13 to S0-19) on case 1a with
+#     wallLayers 3, once with the batch settling's isphSchemes (shepard,
+#     volumeRelaxation 0.05, semiImplicit, upwind) and once with
+#     velocitySmoothing biharmonic and sedimentFlux muscl: still water
+#     stays at rest (pressure L2 < 1e-9, displacement < 1e-6 dl; measured
+#     1e-12)
+#   batch settling (tutorials/isphSediment/batchSettling) at dl = 0.02 m,
+#     alpha_s0 = 0.1, 6 s (E4-09): the interface's descent within 10 % of
+#     the model-consistent alpha_f w = 1.030 cm/s (measured -5.1 %; the
+#     tutorial's dl = 0.01 m: -2.8 %), the bulk's slip u_s - u_f within
+#     5 % of w = 1.145 cm/s, the sediment volume kept (1e-9)
 #   the dam break (tutorials/isphSediment/damBreak) at a/10, 0.6 s: RMS of
 #     the front < 0.35 (measured 0.27), of the column height < 0.05 (0.03)
 #   the sand dumping case 2 (tutorials/isphSediment/sandDumping) at dl =
@@ -44,8 +52,8 @@
 #     length whose support misses the free-surface detector's reach, no
 #     constant/sedimentProperties, dummy particles with wall neumann, wall
 #     dummyLayers without them, an unknown wall scheme, alpha_s above
-#     alphaMax: non-zero exit, a message naming the cause, no time
-#     directory written
+#     alphaMax, volumeRelaxation without dummy layers: non-zero exit, a
+#     message naming the cause, no time directory written
 NAME=isph; . "$(dirname "$0")/lib/case.sh"
 need_bins isphSediment genParticles vtuInfo dictTool
 export MPSDEM_DIR="$ROOT"
@@ -200,16 +208,46 @@ done
 # case 1a with the dam break's isphSchemes and wallLayers 3, the E4-04
 # gates and the same exactness (measured 1e-12) ---
 DB="$ROOT/tutorials/isphSediment/damBreak"
-setcase neutralDummy "$NB"
-set_entry system/particleDict wallLayers 3
-for k in wall freeSurface shifting shiftingCoefficient collision collisionDistance collisionRestitution clipNegativePressure; do
-    set_entry system/isphSchemes "$k" "$("$ROOT/bin/dictTool" "$DB/system/isphSchemes" -entry "$k" | tr -d ';')"
-done
-set_entry system/isphSchemes velocitySmoothing shepard
+BS="$ROOT/tutorials/isphSediment/batchSettling"
+# stillcase NAME: case 1a in NAME with wallLayers 3 and the batch
+# settling's isphSchemes
+stillcase() {
+    setcase "$1" "$NB"
+    set_entry system/particleDict wallLayers 3
+    local k
+    for k in drag sedimentFlux wall freeSurface shifting shiftingCoefficient collision clipNegativePressure velocitySmoothing volumeRelaxation; do
+        set_entry system/isphSchemes "$k" "$("$ROOT/bin/dictTool" "$BS/system/isphSchemes" -entry "$k" | tr -d ';')"
+    done
+}
+stillcase neutralDummy
 if allrun isph_neutral_1a_dummyLayers 1a; then
     r=$(echo "$out" | tail -n 1)
-    echo "    1a, dam-break options: $r"
+    echo "    1a, batch-settling options: $r"
     e404 "$r" 1e-9 1e-6 1e-9 1e-9 && pass isph_neutral_1a_dummyLayers || fail isph_neutral_1a_dummyLayers "$r"
+fi
+stillcase neutralBiharmonic
+set_entry system/isphSchemes velocitySmoothing biharmonic
+set_entry system/isphSchemes sedimentFlux muscl
+if allrun isph_neutral_1a_biharmonic 1a; then
+    r=$(echo "$out" | tail -n 1)
+    echo "    1a, biharmonic smoothing and muscl flux: $r"
+    e404 "$r" 1e-9 1e-6 1e-9 1e-9 && pass isph_neutral_1a_biharmonic || fail isph_neutral_1a_biharmonic "$r"
+fi
+
+# --- batch settling (tutorials/isphSediment/batchSettling) at dl = 0.02
+# m, alpha_s0 = 0.1, 6 s (E4-09): the interface's descent within 10 % of
+# the model-consistent alpha_f w (measured -5.1 %), the bulk's slip within
+# 5 % of w, the sediment volume kept ---
+setcase batchSettling "$BS"
+set_entry system/particleDict dp 0.02
+if allrun isph_batchSettling; then
+    e=$(echo "$out" | awk '/interface descent/ { for (k = 1; k <= NF; k++) if ($k == "error") print $(k + 1) }')
+    r=$(awk '/^# model/ { w = $(NF - 1) } !/^#/ && $1 >= 0.5 { s += ($4 - $5) / w; n++ } END { if (n) printf "%.4f", -s / n - 1 }' "$c/validation/series_alpha0.1.dat")
+    v=$(for t in 0.25 6; do "$ROOT/bin/vtuInfo" -dump "$c/$t/fluid.vtu"; done 2>/dev/null | awk '/^# x/ { f++; next } $1 ~ /^[-0-9.]/ && $8 == 0 { s[f] += $14 * $18 } END { if (s[1] > 0) printf "%.2e", (s[2] - s[1]) / s[1] }')
+    echo "    batch settling dl = 0.02 m: interface descent error $e %, bulk slip error $r, volume change $v"
+    awk -v e="$e" -v r="$r" -v v="$v" 'BEGIN { if (e < 0) e = -e; if (r < 0) r = -r; if (v < 0) v = -v
+        exit !(e != "" && r != "" && v != "" && e < 10 && r < 0.05 && v < 1e-9) }' \
+        && pass isph_batchSettling || fail isph_batchSettling "interface error $e %, slip error $r, volume change $v"
 fi
 
 # --- the dam break (tutorials/isphSediment/damBreak) at a/10 (dl = 0.02
@@ -268,4 +306,7 @@ set_entry system/isphSchemes wall dummyLayers
 bad noDummy "system/isphSchemes:[0-9]+.*no dummy particles.*wallLayers 3"
 set_entry system/isphSchemes wall dummy
 bad wallName "system/isphSchemes:[0-9]+.*unknown wall scheme 'dummy'; valid: neumann dummyLayers"
+set_entry system/isphSchemes wall neumann
+set_entry system/isphSchemes volumeRelaxation 0.05
+bad volumeRelaxation "system/isphSchemes:[0-9]+.*volumeRelaxation 0.05 needs .wall dummyLayers."
 exit $((fails > 0))

@@ -180,6 +180,12 @@ static int create(struct solver *sv)
                           "smoothingLength %g: the kernel's support (%g dl) "
                           "must reach the free-surface detector's 2.5 dl",
                           S.h / S.dl, S.kernel->support * S.h / S.dl);
+    if (S.volume_beta > 0 && S.wall != ISPH_WALL_DUMMY)
+        return dict_error(f->schemes, "volumeRelaxation", SIM_ERR_DICT,
+                          "volumeRelaxation %g needs `wall dummyLayers`: "
+                          "next to one layer of wall particles the kernel "
+                          "sum misses the part of the support behind the "
+                          "wall (doc/theory.md S0-19)", S.volume_beta);
     TRY(dict_get_dict(f->solution, "PPE", &ppe));
     snprintf(rel, sizeof rel, "%s/fluid.vtu", sv->rt.name);
     app_path(&sv->app, rel, path, sizeof path);

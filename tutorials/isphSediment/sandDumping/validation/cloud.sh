@@ -29,7 +29,7 @@ for t in $times; do
     [ -f "$case/$t/fluid.vtu" ] || continue
     "$root/bin/vtuInfo" -dump "$case/$t/fluid.vtu" | awk -v t="$t" -v dl="$dl" '
         /^# x/ { for (k = 2; k <= NF; k++) c[$k] = k - 1; if (!("alpha.sediment" in c)) { skip = 1; exit } next }
-        $1 ~ /^[-0-9.]/ && $c["type"] == 0 { m++; x[m] = $1; y[m] = $2; a[m] = $c["alpha.sediment"]
+        $1 ~ /^[-0-9.]/ && $c["type"] == 0 { m++; x[m] = $1; y[m] = $2; a[m] = $c["alpha.sediment"] + 0
             vol += a[m] * $c["volume"]; if (a[m] > amax) amax = a[m] }
         END { if (skip) exit
               if (!(amax > 0)) { printf "%s nan nan 0 0 nan nan\n", t; exit }
