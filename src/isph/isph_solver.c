@@ -530,7 +530,6 @@ static void gradients(struct isph_solver *s)
     }
 }
 
-/* The pressure equation at r* (rows as in isph_solver.h). */
 /* volumeRelaxation (S0-19) acts where the support of a is full: no
  * free-surface, isolated or dry neighbour in reach (there theta is short
  * of theta_ref by the missing part of the support, not by a spacing). */
@@ -546,6 +545,7 @@ static int full_support(const struct isph_solver *s, int a)
     return 1;
 }
 
+/* The pressure equation at r* (rows as in isph_solver.h). */
 static int assemble(struct isph_solver *s, double dt)
 {
     const struct neighbour_list *nl = &s->nl;
