@@ -78,6 +78,12 @@ static const struct model_head *const smoothing_table[] = { &smooth_none,
                                                             &smooth_shep,
                                                             &smooth_bih,
                                                             NULL };
+static const struct model_head region_all = { "all",
+    "every water particle" };
+static const struct model_head region_fs = { "freeSurface",
+    "the free-surface particles and those with one in reach, doc S0-18" };
+static const struct model_head *const region_table[] = { &region_all,
+                                                         &region_fs, NULL };
 const struct model_choice isph_solver_choices[] = {
     { "system/isphSchemes", "kernel", (const void *const *)isph_kernels },
     { "system/isphSchemes", "laplacian", (const void *const *)norm_table },
@@ -90,6 +96,8 @@ const struct model_choice isph_solver_choices[] = {
       (const void *const *)collision_table },
     { "system/isphSchemes", "velocitySmoothing",
       (const void *const *)smoothing_table },
+    { "system/isphSchemes", "velocitySmoothingRegion",
+      (const void *const *)region_table },
     { NULL, NULL, NULL },
 };
 
@@ -158,6 +166,10 @@ int isph_settings_read(const struct dict *transport,
                            &S->smoothing_eps));
     TRY(dict_range(schemes, "velocitySmoothingCoefficient",
                    S->smoothing_eps, 0, 1, 0));
+    TRY(model_select_index(schemes, "velocitySmoothingRegion",
+                           "velocity smoothing region",
+                           (const void *const *)region_table, "all",
+                           &S->smoothing_surface));
     TRY(dict_get_scalar_or(schemes, "volumeRelaxation", 0, &S->volume_beta));
     return dict_range(schemes, "volumeRelaxation", S->volume_beta, 0, 1, 0);
 }
@@ -530,19 +542,23 @@ static void gradients(struct isph_solver *s)
     }
 }
 
-/* volumeRelaxation (S0-19) acts where the support of a is full: no
- * free-surface, isolated or dry neighbour in reach (there theta is short
- * of theta_ref by the missing part of the support, not by a spacing). */
-static int full_support(const struct isph_solver *s, int a)
+/* 1 when a free-surface, isolated or dry particle is within reach of a
+ * (a itself included): its support is truncated. volumeRelaxation (S0-19)
+ * acts only where it is not (there theta is short of theta_ref by the
+ * missing part of the support, not by a spacing); velocitySmoothingRegion
+ * freeSurface (S0-18) only where it is. */
+static int near_surface(const struct isph_solver *s, int a)
 {
     const double reach = s->S.kernel->support * s->S.h;
+    if (s->fs[a] || s->isolated[a])
+        return 1;
     for (int64_t k = s->nl.start[a]; k < s->nl.start[a + 1]; k++) {
         int b = s->nl.j[k];
         if (s->nl.r[k] < reach
             && (s->fs[b] || s->isolated[b] || !(s->V[b] > 0)))
-            return 0;
+            return 1;
     }
-    return 1;
+    return 0;
 }
 
 /* The pressure equation at r* (rows as in isph_solver.h). */
@@ -636,7 +652,7 @@ static int assemble(struct isph_solver *s, double dt)
             A->val[e] = d;
             double af = 1 - s->alpha[a];
             div[1] = s->dalpha_f[a] / (af * dt);
-            if (s->S.volume_beta > 0 && full_support(s, a))
+            if (s->S.volume_beta > 0 && !near_surface(s, a))
                 div[1] -= s->S.volume_beta * (s->theta[a] / s->theta_ref - 1)
                         / dt;
             s->b[a] = -(rho / dt) * (div[0] + div[1]);
@@ -722,8 +738,9 @@ static void smooth_velocities(struct isph_solver *s)
             h = h2;
         }
         for (int a = 0; a < s->n; a++)
-            for (int q = 0; q < 2; q++)
-                f[3 * a + q] -= eps * h[2 * a + q];
+            if (!s->S.smoothing_surface || near_surface(s, a))
+                for (int q = 0; q < 2; q++)
+                    f[3 * a + q] -= eps * h[2 * a + q];
     }
 }
 

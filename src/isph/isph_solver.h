@@ -81,6 +81,7 @@ struct isph_settings {
     double collision_ratio, collision_e; /* lee2011: distance [dl], e      */
     int smoothing;               /* enum isph_smoothing (S0-18)            */
     double smoothing_eps;        /* eps per step                           */
+    int smoothing_surface;       /* 1: near the free surface only (S0-18)  */
     double volume_beta;          /* volumeRelaxation (S0-19), 0: off       */
 };
 
