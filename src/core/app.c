@@ -8,6 +8,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include <sys/file.h>
+#include <sys/resource.h>
 #include <sys/stat.h>
 #include <time.h>
 #include <unistd.h>
@@ -33,6 +34,21 @@ double app_cpu_time(void)
     struct timespec ts;
     clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &ts);
     return ts.tv_sec + 1e-9 * ts.tv_nsec;
+}
+
+double app_peak_memory(void)
+{
+    struct rusage ru;
+    if (getrusage(RUSAGE_SELF, &ru))
+        return 0;
+    return 1024.0 * (double)ru.ru_maxrss; /* Linux: kB */
+}
+
+void app_log_peak_memory(long n)
+{
+    double b = app_peak_memory();
+    log_info("    peak memory           %.0f MB (%.2f kB per particle)",
+             b / 1e6, n > 0 ? b / 1e3 / (double)n : 0.0);
 }
 
 static void usage(const char *name, const char *description,

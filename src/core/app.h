@@ -78,6 +78,10 @@ void app_fatal(const struct app *a, int rc) __attribute__((noreturn));
 void app_log_times(const struct app *a);
 double app_wall_time(void);  /* seconds, monotonic */
 double app_cpu_time(void);   /* process CPU seconds */
+double app_peak_memory(void); /* the process's peak resident set [B] */
+/* "    peak memory  X MB (Y kB per particle)" for the final statistics of
+ * a solver of n particles */
+void app_log_peak_memory(long n);
 
 /* Write the parameters this program read, defaults included, to
  * postProcessing/usedParameters/<program> (one file per program, so that

@@ -10,7 +10,8 @@
 #     density, free surface), assembly (PPE matrix and source), PPE (solve),
 #     correction; nonPPE = all but the PPE solve (the issue's target),
 #   CG iterations per step, ns per CG iteration per row,
-#   the CG's bytes per row-iteration and its share of a bandwidth bound.
+#   the CG's bytes per row-iteration and its share of a bandwidth bound,
+#   the process's peak memory [MB] and per particle [kB] (issue 21, item 6).
 # The PPE runs Jacobi-PCG (PRECOND=ic0 etc. to change it; the 2-D tutorials
 # use IC(0)) because its bytes are known: the fast path of
 # src/linsolve/solver_pcg.c streams, per iteration and row,
@@ -64,24 +65,25 @@ run() {   # name tutorial dp
       /PPE iterations/ { it = $4; gsub("[(]", "", it) }
       /time per particle-step/ { nb = $6; ex = $8; as = $10; pp = $12; co = $14 }
       /PPE per iteration/ { ns = $4; nz = $8 }
+      /peak memory/ { mb = $3; kb = $5; gsub("[(]", "", kb) }
       END { bytes = 12 * nz + 8 * 13
-            printf "%s %d %d %s %.3f %.3f %.3f %.3f %.3f %.3f %.1f %.2f %.1f %d\n",
+            printf "%s %d %d %s %.3f %.3f %.3f %.3f %.3f %.3f %.1f %.2f %.1f %d %d %.2f\n",
                    name, n, st, nb_builds, nb, ex, as, pp, co, nb + ex + as + co,
-                   it, ns, nz, bytes }' "$c/log.mpsFluid" > "$c/row"
-    read -r nm n st bl nb ex as pp co non it ns nz bytes < "$c/row"
+                   it, ns, nz, bytes, mb, kb }' "$c/log.mpsFluid" > "$c/row"
+    read -r nm n st bl nb ex as pp co non it ns nz bytes mb kb < "$c/row"
     # working set of the CG, matrix + 7 vectors, counted on all particles
     # (the unknowns exclude dummies and the surface: an upper estimate)
     local wsmb; wsmb=$(awk -v m=$n -v nz=$nz 'BEGIN { printf "%.1f", m * (12 * nz + 56) / 1048576 }')
     local bwc; bwc=$("$TMP/stream" "$(awk -v w=$wsmb 'BEGIN { print (w < 0.1 ? 0.1 : w) }')" | awk '{ print $2 }')
     awk -v nm=$nm -v n=$n -v st=$st -v bl=$bl -v nb=$nb -v ex=$ex -v as=$as -v pp=$pp \
         -v co=$co -v non=$non -v it=$it -v ns=$ns -v nz=$nz -v by=$bytes -v ws=$wsmb \
-        -v bwc=$bwc -v bw=$BW 'BEGIN {
-        printf "%-16s %7d %3d %3d %6.3f %6.3f %6.3f %7.3f %6.3f %6.3f %6.1f %7.2f %5.1f %5d %6.1f %6.1f %5.0f%% %5.0f%%\n",
+        -v bwc=$bwc -v bw=$BW -v mb=$mb -v kb=$kb 'BEGIN {
+        printf "%-16s %7d %3d %3d %6.3f %6.3f %6.3f %7.3f %6.3f %6.3f %6.1f %7.2f %5.1f %5d %6.1f %6.1f %5.0f%% %5.0f%% %5d %5.2f\n",
                nm, n, st, bl, nb, ex, as, pp, co, non, it, ns, nz, by, ws, bwc,
-               100 * by / bwc / ns, 100 * by / bw / ns }'
+               100 * by / bwc / ns, 100 * by / bw / ns, mb, kb }'
 }
-printf "%-16s %7s %3s %3s %6s %6s %6s %7s %6s %6s %6s %7s %5s %5s %6s %6s %6s %6s\n" \
-    case particles stp bld neigh explic assem PPE corr nonPPE it/stp ns/row nz/row B/row ws_MB ws_GBs BW% DRAM%
+printf "%-16s %7s %3s %3s %6s %6s %6s %7s %6s %6s %6s %7s %5s %5s %6s %6s %6s %6s %5s %5s\n" \
+    case particles stp bld neigh explic assem PPE corr nonPPE it/stp ns/row nz/row B/row ws_MB ws_GBs BW% DRAM% MB kB/p
 echo "# times in us per particle-step; ns/row and B/row per CG iteration; ws = CG working set"
 run hydrostatic_50k  hydrostaticTank   0.0033
 run hydrostatic_200k hydrostaticTank   0.00195

@@ -223,6 +223,7 @@ static void final_stats(struct solver *sv)
     double ps = (double)s->d.n * (double)st->steps;
     log_info("\nDEM statistics (%s)", s->sol.integrator->name);
     log_info("    steps taken          %ld", st->steps);
+    app_log_peak_memory(s->d.n);
     log_info("    steps rejected       %ld", st->rejected);
     log_info("    stability-limited    %ld", st->stab_limited);
     log_info("    force evaluations    %ld (+ %ld spring projections and "

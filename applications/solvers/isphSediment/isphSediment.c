@@ -259,6 +259,7 @@ static void final_stats(struct solver *sv)
     double ns = (double)f->s.n * (double)(t->steps ? t->steps : 1);
     log_info("\nISPH statistics");
     log_info("    steps                 %ld", t->steps);
+    app_log_peak_memory(f->s.n);
     log_info("    PPE iterations        %ld (%.1f per step)", t->ppe_iters,
              t->steps ? (double)t->ppe_iters / t->steps : 0.0);
     log_info("    time per particle-step [us]: neighbours %.3f  explicit "

@@ -285,6 +285,7 @@ static void final_stats(struct solver *sv)
     log_info("\nMLPG statistics");
     log_info("    steps                 %ld (neighbour lists built %ld)",
              t->steps, t->builds);
+    app_log_peak_memory(f->s.n);
     log_info("    PPE iterations        %ld (%.1f per step)", t->ppe_iters,
              t->steps ? (double)t->ppe_iters / t->steps : 0.0);
     log_info("    time per node-step [us]: neighbours %.3f  explicit %.3f  "

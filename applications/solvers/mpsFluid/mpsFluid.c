@@ -464,6 +464,7 @@ static void final_stats(struct solver *sv)
              t->steps, t->builds);
     log_info("    particles             %d (escaped %ld)", f->s.P.n,
              f->s.n_escaped);
+    app_log_peak_memory(f->s.P.n);
     log_info("    PPE iterations        %ld (%.1f per step)", t->ppe_iters,
              t->steps ? (double)t->ppe_iters / t->steps : 0.0);
     log_info("    time per particle-step [us]: neighbours %.3f  explicit "
