@@ -246,24 +246,6 @@ static int prepare(struct isph_solver *s)
     return SIM_OK;
 }
 
-/* The nearest wall particle of every dummy within the kernel's support
- * (walls do not move); -1 for a dummy out of every wall particle's reach
- * (deep in a corner), which no water particle reaches either. */
-static void find_anchors(struct isph_solver *s)
-{
-    for (int a = 0; a < s->n; a++) {
-        s->anchor[a] = -1;
-        if (s->type[a] != ISPH_DUMMY)
-            continue;
-        double best = INFINITY;
-        for (int64_t k = s->nl.start[a]; k < s->nl.start[a + 1]; k++) {
-            int b = s->nl.j[k];
-            if (s->type[b] == ISPH_WALL && s->nl.r[k] < best)
-                best = s->nl.r[k], s->anchor[a] = b;
-        }
-    }
-}
-
 /* Two sums of a particle inside the square lattice of spacing dl at V =
  * dl^2: the kernel sum sum_b V_b W_ab, itself included (theta_ref of
  * S0-19), and div r = sum_b V_b (x_b - x_a).grad W_ab (2 for a kernel
@@ -299,7 +281,7 @@ int isph_solver_init(struct isph_solver *s, const struct isph_settings *S,
         || !ALLOC(divu, 1) || !ALLOC(Tf, 3) || !ALLOC(Ts, 3)
         || !ALLOC(acc_f, 2) || !ALLOC(acc_s, 2) || !ALLOC(gamma, 1)
         || !ALLOC(rows, 1) || !ALLOC(isolated, 1) || !ALLOC(anchor, 1)
-        || !ALLOC(divr, 1) || !ALLOC(theta, 1))
+        || !ALLOC(divr, 1) || !ALLOC(theta, 1) || !ALLOC(truncated, 1))
         return SIM_ERR_NOMEM;
 #undef ALLOC
     for (int i = 0; i < s->n; i++)
@@ -334,7 +316,7 @@ int isph_solver_init(struct isph_solver *s, const struct isph_settings *S,
     lattice_sums(S, &s->theta_ref, &divr0);
     s->flux_scale = 2 / divr0;
     TRY(build_list(s));
-    find_anchors(s);
+    isph_find_anchors(s);
     return prepare(s);
 }
 
@@ -543,10 +525,11 @@ static void gradients(struct isph_solver *s)
 }
 
 /* 1 when a free-surface, isolated or dry particle is within reach of a
- * (a itself included): its support is truncated. volumeRelaxation (S0-19)
- * acts only where it is not (there theta is short of theta_ref by the
- * missing part of the support, not by a spacing); velocitySmoothingRegion
- * freeSurface (S0-18) only where it is. */
+ * (a itself included): its support is truncated (`truncated`, set once a
+ * step at r*). volumeRelaxation (S0-19) acts only where it is not (there
+ * theta is short of theta_ref by the missing part of the support, not by
+ * a spacing); velocitySmoothingRegion freeSurface (S0-18) only where it
+ * is. */
 static int near_surface(const struct isph_solver *s, int a)
 {
     const double reach = s->S.kernel->support * s->S.h;
@@ -652,7 +635,7 @@ static int assemble(struct isph_solver *s, double dt)
             A->val[e] = d;
             double af = 1 - s->alpha[a];
             div[1] = s->dalpha_f[a] / (af * dt);
-            if (s->S.volume_beta > 0 && !near_surface(s, a))
+            if (s->S.volume_beta > 0 && !s->truncated[a])
                 div[1] -= s->S.volume_beta * (s->theta[a] / s->theta_ref - 1)
                         / dt;
             s->b[a] = -(rho / dt) * (div[0] + div[1]);
@@ -689,144 +672,6 @@ static int assemble(struct isph_solver *s, double dt)
                          "neighbours are not on its fluid side: check the "
                          "normals)", bad, s->x[3 * bad], s->x[3 * bad + 1]);
     return SIM_OK;
-}
-
-/* out = (I - S) f, S f = sum_b V_b W_ab f_b / sum_b V_b W_ab the kernel
- * (Shepard) mean over the water in reach; f's 2 components at stride fs,
- * out's at stride 2; 0 where no water is in reach and for walls. */
-static void high_pass(const struct isph_solver *s, const double *f, int fs,
-                      double *out)
-{
-    const double reach = s->S.kernel->support * s->S.h;
-#pragma omp parallel for schedule(static)
-    for (int a = 0; a < s->n; a++) {
-        double m[2] = { 0, 0 }, ws = 0;
-        if (s->type[a] == ISPH_FLUID)
-            for (int64_t k = s->nl.start[a]; k < s->nl.start[a + 1]; k++) {
-                int b = s->nl.j[k];
-                double r = s->nl.r[k];
-                if (s->type[b] != ISPH_FLUID || !(s->V[b] > 0) || r >= reach)
-                    continue;
-                double wk = s->V[b] * s->S.kernel->w(r, s->S.h);
-                m[0] += wk * f[fs * b];
-                m[1] += wk * f[fs * b + 1];
-                ws += wk;
-            }
-        for (int q = 0; q < 2; q++)
-            out[2 * a + q] = ws > 0 ? f[fs * a + q] - m[q] / ws : 0;
-    }
-}
-
-/* velocitySmoothing (S0-18), after the update, for the water and the
- * sediment: shepard u <- u - eps (I - S) u, biharmonic u <- u - eps (I -
- * S)^2 u. Both average a row-to-row checkerboard away, which the
- * corrected divergence of the pressure equation is blind to and which in
- * a suspension grows from the bed and the surface; uniform and linear
- * fields inside the water are kept, still water stays still. shepard
- * damps a wave of length L by about eps (h/L)^2 a step, an artificial
- * viscosity; biharmonic by about eps (h/L)^4, so the eddies of a sinking
- * cloud keep more of their strength. */
-static void smooth_velocities(struct isph_solver *s)
-{
-    const double eps = s->S.smoothing_eps;
-    double *h1 = s->ustar, *h2 = s->gu; /* free after the update */
-    for (int pass = 0; pass < 2; pass++) {
-        double *f = pass ? s->us : s->u, *h = h1;
-        high_pass(s, f, 3, h1);
-        if (s->S.smoothing == ISPH_SMOOTHING_BIHARMONIC) {
-            high_pass(s, h1, 2, h2);
-            h = h2;
-        }
-        for (int a = 0; a < s->n; a++)
-            if (!s->S.smoothing_surface || near_surface(s, a))
-                for (int q = 0; q < 2; q++)
-                    f[3 * a + q] -= eps * h[2 * a + q];
-    }
-}
-
-/* clipNegativePressure (S0-17): the water's p < 0 set to 0, then the
- * walls' and dummies' rows (their pressure extrapolated from the water,
- * unit diagonal) evaluated again with it, walls first: above the
- * waterline they keep their hydrostatic p < 0, so still water stays
- * still, while under a thin tongue they no longer pass on the water's
- * suction. */
-static void clip_negative(struct isph_solver *s)
-{
-    const struct csr_matrix *A = &s->A;
-    for (int a = 0; a < s->n; a++)
-        if (s->type[a] == ISPH_FLUID)
-            s->p[a] = fmax(s->p[a], 0);
-    if (s->S.wall != ISPH_WALL_DUMMY) /* Neumann rows are not evaluations */
-        return;
-    for (int pass = ISPH_WALL; pass <= ISPH_DUMMY; pass++)
-        for (int a = 0; a < s->n; a++) {
-            if (s->type[a] != pass)
-                continue;
-            double v = s->b[a];
-            for (int64_t e = A->rowptr[a] + 1; e < A->rowptr[a + 1]; e++)
-                v -= A->val[e] * s->p[A->col[e]];
-            s->p[a] = v / A->val[A->rowptr[a]];
-        }
-}
-
-/* wall dummyLayers (S0-13): the walls are impermeable. A water particle
- * that ends a step less than dl/2 from the wall line of the wall particle
- * it stands over (|tangential offset| < dl/2) is put back at dl/2 and
- * loses the part of its velocity into the wall: where the pressure is
- * nearly zero (the tip of a surge on a dry floor) nothing else stops a
- * particle falling into the floor. Counted in the log (`pushedBack`).
- * Within 1.5 dl of the wall line the sediment loses its velocity into
- * the wall (u_s.n = U.n = 0, D.5): the model has no normal stress of
- * the sediment, and the grains arriving at the floor would drag the
- * first rows of water into it. Where that row carries sediment (alpha_s
- * above the trace of S0-11) its water loses its normal velocity too,
- * either way: the wall holds the row's grains, so no drag holds its
- * water against the pressure gradient that carries the suspension's
- * weight above it, and the corrected divergence, a central difference
- * that skips the particle's own velocity, lets it rise (a settling
- * suspension rose from the floor at 0.37 cm/s instead of 0.11). */
-static void keep_off_walls(struct isph_solver *s)
-{
-    const double half = 0.5 * s->S.dl;
-    long pushed = 0;
-#pragma omp parallel for schedule(static) reduction(+ : pushed)
-    for (int a = 0; a < s->n; a++) {
-        if (s->type[a] != ISPH_FLUID)
-            continue;
-        double *xa = s->x + 3 * a, *ua = s->u + 3 * a, *us = s->us + 3 * a;
-        for (int64_t k = s->nl.start[a]; k < s->nl.start[a + 1]; k++) {
-            int b = s->nl.j[k];
-            if (s->type[b] != ISPH_WALL)
-                continue;
-            const double *nb = s->normal + 3 * b, *xb = s->x + 3 * b;
-            double dx = xa[0] - xb[0], dy = xa[1] - xb[1];
-            double d = dx * nb[0] + dy * nb[1]; /* < 0: on the water side */
-            double t = fabs(-dx * nb[1] + dy * nb[0]);
-            if (t >= half || d <= -3 * half)
-                continue;
-            double sn = us[0] * nb[0] + us[1] * nb[1];
-            if (sn > 0) { /* the first row: no sediment into the wall */
-                us[0] -= sn * nb[0];
-                us[1] -= sn * nb[1];
-            }
-            if (s->alpha[a] >= ISPH_ALPHA_TRACE) {
-                double fn = ua[0] * nb[0] + ua[1] * nb[1];
-                ua[0] -= fn * nb[0];
-                ua[1] -= fn * nb[1];
-            }
-            if (d <= -half)
-                continue;
-            xa[0] -= (d + half) * nb[0];
-            xa[1] -= (d + half) * nb[1];
-            double un = ua[0] * nb[0] + ua[1] * nb[1];
-            if (un > 0) {
-                ua[0] -= un * nb[0];
-                ua[1] -= un * nb[1];
-            }
-            pushed++;
-        }
-    }
-    s->n_pushed += pushed;
 }
 
 /* freeSurface positionDivergence (S0-14): a water particle whose div r
@@ -912,11 +757,15 @@ int isph_step(struct isph_solver *s, double dt)
         s->fs[a] = (s->fs[a] || s->isolated[a]) && s->type[a] == ISPH_FLUID;
         s->n_surface += s->fs[a];
     }
+    if (S->volume_beta > 0 || S->smoothing_surface)
+#pragma omp parallel for schedule(static)
+        for (int a = 0; a < n; a++)
+            s->truncated[a] = near_surface(s, a);
     TRY(assemble(s, dt));
     double t2 = app_wall_time();
     TRY(linsolve_solve(s->ls, &s->A, s->b, s->p, &s->last));
     if (S->clip_negative)
-        clip_negative(s);
+        isph_clip_negative(s);
     s->t.ppe_iters += s->last.iters;
     double t3 = app_wall_time();
     s->t.ppe += t3 - t2;
@@ -941,7 +790,7 @@ int isph_step(struct isph_solver *s, double dt)
         s->alpha[a] = s->anew[a];
     }
     if (S->smoothing != ISPH_SMOOTHING_NONE)
-        smooth_velocities(s);
+        isph_smooth_velocities(s);
     /* r^(n+1) once every gradient at r* is taken (5.26) */
     for (int a = 0; a < n; a++)
         if (s->type[a] == ISPH_FLUID)
@@ -952,7 +801,7 @@ int isph_step(struct isph_solver *s, double dt)
             && s->V[a] > 0) /* V of the new fraction (5.34) */
             s->V[a] = volume(s, a);
     if (dummies)
-        keep_off_walls(s);
+        isph_keep_off_walls(s);
     if (S->shift == ISPH_SHIFT_LIND2012)
         isph_shift(s);
     for (int a = 0; a < 3 * n; a++)
@@ -973,6 +822,7 @@ void isph_solver_free(struct isph_solver *s)
         free(s->divu), free(s->Tf), free(s->Ts);
     free(s->acc_f), free(s->acc_s), free(s->gamma), free(s->rows);
     free(s->isolated), free(s->anchor), free(s->divr), free(s->theta);
+    free(s->truncated);
     cells_free(&s->grid);
     neighbour_free(&s->nl);
     csr_free(&s->A);

@@ -137,6 +137,8 @@ struct isph_solver {
     double *theta;               /* kernel sum (isph_cloud.theta)           */
     double theta_ref;            /* its value inside the start lattice      */
     double flux_scale;           /* 2/div r of that lattice (upwind, S0-09) */
+    uint8_t *truncated;          /* 1: a free-surface, isolated or dry
+                                    particle in reach (S0-18, S0-19)      */
     uint8_t *isolated;           /* 1: singular corrections (isph.h): a
                                     water particle has p = 0 and no
                                     gradients, a wall particle is dry     */
@@ -174,6 +176,17 @@ int isph_step(struct isph_solver *s, double dt);
  * particles at r^(n+1) by the Fickian shift, with the free-surface flags
  * of the step. */
 void isph_shift(struct isph_solver *s);
+
+/* velocitySmoothing (smoothing.c; S0-18), after the update. */
+void isph_smooth_velocities(struct isph_solver *s);
+
+/* wall dummyLayers (walls.c; S0-13, S0-17): each dummy's nearest wall
+ * particle (anchor, -1 if none in reach), once; the wall and dummy rows
+ * evaluated again after the water's p < 0 is clipped; water particles
+ * put back off the walls after the step. */
+void isph_find_anchors(struct isph_solver *s);
+void isph_clip_negative(struct isph_solver *s);
+void isph_keep_off_walls(struct isph_solver *s);
 
 void isph_solver_free(struct isph_solver *s);
 
