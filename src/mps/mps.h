@@ -186,8 +186,10 @@ struct mps_solver {
     double *ustar, *grad, *lap, *div;
     uint8_t *rows_fluid, *rows_ppe;
     uint8_t *rows_list;             /* rows the list builds (nl.rows)    */
-    int all_rows;                   /* every particle gets its row (the
-                                       first list: partners, wall depth) */
+    int setup_rows;                 /* the first list: rows of walls and
+                                       dummies (partners, wall depth),
+                                       no weights                       */
+    int all_rows;                   /* every particle gets its row       */
     int dummy_rows;                 /* dummies near water get rows
                                        (dummyPressure extrapolated)     */
     uint8_t *cell_wet;              /* per cell of the grid: holds fluid */

@@ -19,8 +19,8 @@ int mps_neighbours(struct mps_solver *s);
  * and the particles hold phi. Uses lap and div as scratch. */
 void mps_volume_exchange(struct mps_solver *s, double dt);
 
-/* Kernel weights of every operator radius from nl.r. */
-void mps_weights(struct mps_solver *s);
+/* Kernel weights of every operator radius from nl.r (grown to nl.nnz). */
+int mps_weights(struct mps_solver *s);
 
 /* Assemble and solve the PPE; fills P->p (0 at Dirichlet particles). */
 int mps_ppe_solve(struct mps_solver *s, double dt);

@@ -68,7 +68,7 @@ static void predict(struct mps_solver *s, double dt)
  * r* = r + dt u* and re-measure every pair of the list there, so that the
  * number density of the PPE source sees the compression the explicit step
  * would cause. */
-static void predict_positions(struct mps_solver *s, double dt, double sign)
+static int predict_positions(struct mps_solver *s, double dt, double sign)
 {
     struct mps_particles *P = &s->P;
 #pragma omp parallel for schedule(static)
@@ -77,9 +77,9 @@ static void predict_positions(struct mps_solver *s, double dt, double sign)
             for (int q = 0; q < 3; q++)
                 P->x[3 * i + q] += sign * dt * s->ustar[3 * i + q];
     if (sign < 0)
-        return;
-    neighbour_update(&s->nl, P->x);   /* from the candidates (skin) */
-    mps_weights(s);
+        return SIM_OK;
+    TRY(neighbour_update(&s->nl, P->x));   /* from the candidates (skin) */
+    return mps_weights(s);
 }
 
 static void density(struct mps_solver *s)
@@ -199,7 +199,7 @@ int mps_step(struct mps_solver *s, double dt)
     TRY(soil_viscous(s, dt));
     TRY(s->S.collision->apply(s, dt));
     if (s->S.predictor)
-        predict_positions(s, dt, 1.0);
+        TRY(predict_positions(s, dt, 1.0));
     density(s);
     double t2 = omp_get_wtime();
     TRY(mps_ppe_solve(s, dt));

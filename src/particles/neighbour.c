@@ -5,8 +5,9 @@
  * row's distance in y and z): corner rows of the 27 cells of side rc are
  * skipped, and cells down to rc/2 are allowed (fewer candidates, another
  * particle order). Each thread writes the rows of its contiguous block
- * into its own buffer in a single branch-free pass; the blocks are then
- * copied into place (no count pass, no locks). Rows keep the
+ * into its own buffer in a single branch-free pass (no count pass, no
+ * locks); the candidates stay there, the block's row offsets counted from
+ * its first candidate (no copy into one array: memory). Rows keep the
  * cell-traversal order (z, then y, then x), so that on the same grid the
  * rows, and every sum over them, are those of a full 27-cell scan.
  *
@@ -14,7 +15,8 @@
  * indices of those within the cut-off in a scratch laid out like the
  * candidates; once the blocks' counts are known, a second pass writes them
  * into place with their distances (recomputed: cheaper than storing them
- * for every candidate). */
+ * for every candidate). The update goes by the build's blocks, so any
+ * thread count reads the candidates where the build left them. */
 #include "particles/neighbour.h"
 
 #include <math.h>
@@ -52,25 +54,26 @@ static int reserve_entries(struct neighbour_list *nl, int64_t nnz)
 {
     if ((size_t)nnz <= nl->cap_nnz)
         return SIM_OK;
-    size_t c = (size_t)nnz + (size_t)nnz / 4 + 64;
+    /* sized to the pairs within rc (about 2/3 of the candidates at a
+     * skin of 0.5 dp in 3-D), with room for the growth between builds */
+    size_t c = (size_t)nnz + (size_t)nnz / 8 + 64;
     SIM_GROW(nl->j, c);
     SIM_GROW(nl->r, c);
     nl->cap_nnz = c;
     return SIM_OK;
 }
 
-static int reserve_candidates(struct neighbour_list *nl, int64_t nnz)
+static int reserve_scratch(struct neighbour_list *nl, int64_t nnz)
 {
     if ((size_t)nnz <= nl->cap_cand)
         return SIM_OK;
-    size_t c = (size_t)nnz + (size_t)nnz / 4 + 64;
-    SIM_GROW(nl->cj, c);
+    size_t c = (size_t)nnz + (size_t)nnz / 8 + 64;
     SIM_GROW(nl->sj, c);
     nl->cap_cand = c;
     return SIM_OK;
 }
 
-/* One row buffer per thread, plus the count of entries each holds. */
+/* One candidate buffer per block, the blocks' first rows and counts. */
 static int reserve_buffers(struct neighbour_list *nl, int nth)
 {
     if (nth <= nl->nbuf)
@@ -87,6 +90,10 @@ static int reserve_buffers(struct neighbour_list *nl, int nth)
     if (!k)
         return SIM_ERR_NOMEM;
     nl->blk = k;
+    int *r = sim_realloc(nl->blk_row, ((size_t)nth + 1) * sizeof *r);
+    if (!r)
+        return SIM_ERR_NOMEM;
+    nl->blk_row = r;
     for (int t = nl->nbuf; t < nth; t++) {
         nl->buf[t] = NULL;
         nl->cap_buf[t] = 0;
@@ -134,7 +141,7 @@ static int scan_block(struct neighbour_list *nl, const struct cell_grid *g,
         int64_t len;
         int nrun = cells_runs(g, x + 3 * i, rc, rn, &len);
         if ((size_t)(m + len) > nl->cap_buf[t]) {
-            size_t c = (size_t)(m + len) * 2 + 1024;
+            size_t c = (size_t)(m + len) + (size_t)(m + len) / 4 + 1024;
             int32_t *p = sim_realloc(nl->buf[t], c * sizeof *p);
             if (!p)
                 return SIM_ERR_NOMEM;
@@ -160,6 +167,7 @@ static int build_candidates(struct neighbour_list *nl,
     {
         int t = omp_get_thread_num(), nt = omp_get_num_threads();
         int a = (int)((int64_t)n * t / nt), b = (int)((int64_t)n * (t + 1) / nt);
+        nl->blk_row[t] = a;
         int rc = scan_block(nl, g, x, rl, t, a, b, &used[t]);
         if (rc) {
 #pragma omp atomic write
@@ -176,12 +184,11 @@ static int build_candidates(struct neighbour_list *nl,
             }
             nl->cstart[n] = acc;
             nl->nnz_cand = acc;
+            nl->nblk = nt;
+            nl->blk_row[nt] = n;
             if (!err)
-                err = reserve_candidates(nl, acc);
+                err = reserve_scratch(nl, acc);
         }
-        if (!err && used[t])
-            memcpy(nl->cj + nl->cstart[a], nl->buf[t],
-                   (size_t)used[t] * sizeof *nl->cj);
     }
     return err;
 }
@@ -198,9 +205,7 @@ int neighbour_build_skin(struct neighbour_list *nl, const struct cell_grid *g,
     nl->rc = rc;
     nl->skin = skin;
     TRY(build_candidates(nl, g, x, rl));
-    TRY(reserve_entries(nl, nl->nnz_cand));
-    neighbour_update(nl, x);
-    return SIM_OK;
+    return neighbour_update(nl, x);
 }
 
 int neighbour_build(struct neighbour_list *nl, const struct cell_grid *g,
@@ -216,21 +221,24 @@ int neighbour_build(struct neighbour_list *nl, const struct cell_grid *g,
  * except past the block's last row, which another thread owns: that row
  * takes the branch. */
 static int64_t select_block(struct neighbour_list *nl, const double *x,
-                            double rc2, int a, int b)
+                            double rc2, int t)
 {
+    const int a = nl->blk_row[t], b = nl->blk_row[t + 1];
+    const int32_t *cj = nl->buf[t];   /* from candidate cstart[a] on */
+    const int64_t base = nl->cstart[a];
     int64_t tot = 0;
     for (int i = a; i < b; i++) {
         const double *xi = x + 3 * i;
         int64_t k0 = nl->cstart[i], k1 = nl->cstart[i + 1], pos = k0;
         if (i < b - 1) {
             for (int64_t k = k0; k < k1; k++) {
-                int j = nl->cj[k];
+                int j = cj[k - base];
                 nl->sj[pos] = j;
                 pos += dist2(xi, x + 3 * j) < rc2;
             }
         } else {
             for (int64_t k = k0; k < k1; k++) {
-                int j = nl->cj[k];
+                int j = cj[k - base];
                 if (dist2(xi, x + 3 * j) < rc2)
                     nl->sj[pos++] = j;
             }
@@ -241,52 +249,62 @@ static int64_t select_block(struct neighbour_list *nl, const double *x,
     return tot;
 }
 
-void neighbour_update(struct neighbour_list *nl, const double *x)
+int neighbour_update(struct neighbour_list *nl, const double *x)
 {
-    const int n = nl->n;
+    const int n = nl->n, nb = nl->nblk;
     const double rc2 = nl->rc * nl->rc;
     const double ri2 = nl->r_inner > 0 ? nl->r_inner * nl->r_inner : rc2;
     int64_t *cnt = nl->blk;
-    /* blk holds nbuf counts: never more threads than at the build */
-    int nth = omp_get_max_threads() < nl->nbuf ? omp_get_max_threads()
-                                               : nl->nbuf;
-    if (nth < 1)
-        return;   /* brute-force list: no candidates */
-#pragma omp parallel num_threads(nth)
+    if (nb < 1)
+        return SIM_OK;   /* brute-force list: no candidates */
+    int err = SIM_OK;
+    /* by the build's blocks, whose candidates are in their buffers: one
+     * block per thread when the thread count is the build's */
+#pragma omp parallel
     {
-        int t = omp_get_thread_num(), nt = omp_get_num_threads();
-        int a = (int)((int64_t)n * t / nt), b = (int)((int64_t)n * (t + 1) / nt);
-        cnt[t] = select_block(nl, x, rc2, a, b);
-#pragma omp barrier
-        int64_t off = 0;
-        for (int u = 0; u < t; u++)
-            off += cnt[u];
-        for (int i = a; i < b; i++) {
-            int64_t len = nl->start[i], k0 = nl->cstart[i];
-            nl->start[i] = off;
-            const double *xi = x + 3 * i;
-            /* pairs within r_inner from the front, the others from the
-             * back (without a branch: which it is does not follow a
-             * pattern); with no split every pair is "inner" */
-            int64_t front = off, back = off + len - 1;
-            for (int64_t m = 0; m < len; m++) {
-                int j = nl->sj[k0 + m];
-                double d2 = dist2(xi, x + 3 * j);
-                int in = d2 < ri2;
-                int64_t pos = in ? front : back;
-                front += in;
-                back -= !in;
-                nl->j[pos] = j;
-                nl->r[pos] = sqrt(d2);
-            }
-            nl->mid[i] = front;
-            off += len;
+#pragma omp for schedule(static)
+        for (int t = 0; t < nb; t++)
+            cnt[t] = select_block(nl, x, rc2, t);
+#pragma omp single
+        {
+            int64_t tot = 0;
+            for (int u = 0; u < nb; u++)
+                tot += cnt[u];
+            err = reserve_entries(nl, tot);
         }
-        if (t == nt - 1) {
-            nl->start[n] = off;
-            nl->nnz = off;
+#pragma omp for schedule(static)
+        for (int t = 0; t < nb; t++) {
+            int64_t off = 0;
+            for (int u = 0; u < t; u++)
+                off += cnt[u];
+            for (int i = nl->blk_row[t]; i < nl->blk_row[t + 1] && !err; i++) {
+                int64_t len = nl->start[i], k0 = nl->cstart[i];
+                nl->start[i] = off;
+                const double *xi = x + 3 * i;
+                /* pairs within r_inner from the front, the others from
+                 * the back (without a branch: which it is does not follow
+                 * a pattern); with no split every pair is "inner" */
+                int64_t front = off, back = off + len - 1;
+                for (int64_t m = 0; m < len; m++) {
+                    int j = nl->sj[k0 + m];
+                    double d2 = dist2(xi, x + 3 * j);
+                    int in = d2 < ri2;
+                    int64_t pos = in ? front : back;
+                    front += in;
+                    back -= !in;
+                    nl->j[pos] = j;
+                    nl->r[pos] = sqrt(d2);
+                }
+                nl->mid[i] = front;
+                off += len;
+            }
+            if (t == nb - 1) {
+                nl->start[n] = off;
+                nl->nnz = off;
+            }
         }
     }
+    return err;
 }
 
 static void prefix(struct neighbour_list *nl)
@@ -313,6 +331,7 @@ int neighbour_build_brute(struct neighbour_list *nl, int dim, const double *x,
     TRY(reserve_rows(nl, n));
     nl->rc = rc;
     nl->nnz_cand = 0;   /* no candidates: not for neighbour_update */
+    nl->nblk = 0;
     for (int pass = 0; pass < 2; pass++) {
         for (int i = 0; i < n; i++) {
             int64_t m = 0, base = pass ? nl->start[i] : 0;
@@ -359,12 +378,12 @@ void neighbour_free(struct neighbour_list *nl)
     free(nl->r);
     free(nl->cstart);
     free(nl->mid);
-    free(nl->cj);
     free(nl->sj);
     for (int t = 0; t < nl->nbuf; t++)
         free(nl->buf[t]);
     free(nl->buf);
     free(nl->cap_buf);
     free(nl->blk);
+    free(nl->blk_row);
     memset(nl, 0, sizeof *nl);
 }

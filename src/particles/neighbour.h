@@ -15,7 +15,9 @@
  * which is exact while no particle has moved more than skin/2 since the
  * build. The rows then hold only pairs within rc, so that the operators
  * never loop over the skin's zero-weight pairs; the update costs one pass
- * over the candidates and allocates nothing.
+ * over the candidates, and allocates only when more pairs than ever
+ * before lie within rc (the entries hold the pairs within rc, not the
+ * candidates, with 1/8 room to grow).
  *
  * neighbour_build_brute() is the O(n^2) reference the fast build is tested
  * against (SWIFT test27cells): same contract, rows in increasing j.
@@ -39,14 +41,16 @@ struct neighbour_list {
     /* candidates within rc + skin (neighbour_build_skin) */
     double skin;      /* [m]                                            */
     int64_t nnz_cand; /* candidate pairs; nnz <= nnz_cand               */
-    int64_t *cstart;  /* n+1                                            */
-    int32_t *cj;      /* nnz_cand                                       */
+    int64_t *cstart;  /* n+1: row i's candidates are [cstart[i],
+                         cstart[i+1]), held by the buffer of its block  */
     int32_t *sj;      /* cap_cand: scratch of neighbour_update()        */
     size_t cap_cand;
-    int nbuf;         /* per-thread row buffers of the build            */
-    int32_t **buf;
+    int nblk;         /* blocks of rows of the last build (its threads) */
+    int *blk_row;     /* nblk+1: first row of each block                */
+    int32_t **buf;    /* per block: its candidates from cstart[blk_row] */
     size_t *cap_buf;
-    int64_t *blk;     /* nbuf: entries of each thread's block           */
+    int nbuf;         /* buffers allocated (>= nblk)                    */
+    int64_t *blk;     /* nbuf: entries of each block                    */
     /* NULL, or one flag per particle read by the build: rows[i] == 0
      * leaves row i empty (i still appears in the rows of others), for
      * particles whose own sums nobody reads (MPS dummy layers). */
@@ -85,8 +89,9 @@ int neighbour_build(struct neighbour_list *nl, const struct cell_grid *g,
 int neighbour_build_skin(struct neighbour_list *nl, const struct cell_grid *g,
                          const double *x, double rc, double skin);
 
-/* Rows from the candidates at positions x (see above). */
-void neighbour_update(struct neighbour_list *nl, const double *x);
+/* Rows from the candidates at positions x (see above); the entries grow
+ * when more pairs than ever before are within rc. */
+int neighbour_update(struct neighbour_list *nl, const double *x);
 
 /* O(n^2) reference; particles with non-finite positions have no
  * neighbours. It keeps no candidates (no neighbour_update). */

@@ -141,12 +141,27 @@ static void skin_case(int dim, int n, double rc, double skin, double h,
         check_split(&fast, x, dim, n, ri);
     compare(&fast, &ref, x);
     assert_true(fast.nnz_cand > fast.nnz);
+    /* every candidate selected: the entries outgrow their room (they hold
+     * the pairs within rc, not the candidates) and the update grows them */
+    size_t room = fast.cap_nnz;
+    fast.rc = rc + skin;
+    assert_int_equal(neighbour_update(&fast, x), 0);
+    assert_true(fast.nnz == fast.nnz_cand && (size_t)fast.nnz > room);
+    assert_int_equal(neighbour_build_brute(&ref, dim, x, n, rc + skin), 0);
+    compare(&fast, &ref, x);
+    fast.rc = rc;
     const double a = 0.499 * skin / sqrt(dim) / 2; /* two moves < skin/2 */
+    const int threads = omp_get_max_threads();
     for (int move = 0; move < 2; move++) {
         for (int i = 0; i < n; i++)
             for (int k = 0; k < dim; k++)
                 x[3 * i + k] += a * (2 * urand() - 1);
-        neighbour_update(&fast, x);
+        /* the candidates stay in the build's blocks: an update with
+         * another thread count reads them there */
+        omp_set_num_threads(move ? threads + 1 : 1);
+        int rc_update = neighbour_update(&fast, x);
+        omp_set_num_threads(threads);
+        assert_int_equal(rc_update, 0);
         assert_int_equal(neighbour_build_brute(&ref, dim, x, n, rc), 0);
         if (ri > 0)
             check_split(&fast, x, dim, n, ri);
@@ -198,8 +213,8 @@ static void test_row_mask(void **st)
         for (int i = 0; i < n; i++)   /* move by < skin/2, then update */
             for (int k = 0; k < 3; k++)
                 x[3 * i + k] += 0.004 * (2 * urand() - 1);
-        neighbour_update(&all, x);
-        neighbour_update(&some, x);
+        assert_int_equal(neighbour_update(&all, x), 0);
+        assert_int_equal(neighbour_update(&some, x), 0);
     }
     cells_free(&g);
     neighbour_free(&all);
