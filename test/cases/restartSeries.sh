@@ -9,6 +9,11 @@
 #                        (from 0.41 s): validation/series.dat has strictly
 #                        increasing times, the restart's values after 0.4 s
 #                        and the first run's before
+#   restart_series_tool  bin/tools/foJoin, which every validation script
+#                        uses, on the same case with a third start
+#                        directory (2.5, from 2.51 s) and a fourth that
+#                        holds no file: strictly increasing times, each
+#                        run's rows up to the next start
 ROOT="$(cd "$(dirname "$0")/../.." && pwd)"
 fails=0
 pass() { echo "PASS $1"; }
@@ -44,4 +49,14 @@ else
               END { if (n != 300) print n " rows (300 expected)" }' "$TMP/case/validation/series.dat")
     [ -z "$bad" ] && pass restart_series_join || fail restart_series_join "$(echo "$bad" | head -n 3 | tr '\n' ' ')"
 fi
+series load forces.dat 2.5 4 300 3
+awk '/^#/ || $1 >= 2.51' "$TMP/case/postProcessing/load/2.5/forces.dat" > "$TMP/f" \
+    && mv "$TMP/f" "$TMP/case/postProcessing/load/2.5/forces.dat"
+mkdir -p "$TMP/case/postProcessing/load/3.5"
+"$ROOT/bin/tools/foJoin" "$TMP/case/postProcessing/load" forces.dat > "$TMP/joined"
+bad=$(awk '{ n++; if (n > 1 && $1 <= p) print "time " $1 " after " p
+             v = $1 <= 0.4 + 1e-9 ? 100 : $1 <= 2.5 + 1e-9 ? 200 : 300
+             if ($2 != v + $1) print "t " $1 ": " $2 " (expected " v + $1 ")"; p = $1 }
+           END { if (n != 400) print n " rows (400 expected)" }' "$TMP/joined")
+[ -z "$bad" ] && pass restart_series_tool || fail restart_series_tool "$(echo "$bad" | head -n 3 | tr '\n' ' ')"
 exit $((fails > 0))

@@ -24,7 +24,9 @@
 set -e
 [ $# -ge 1 ] || { echo "usage: compare.sh Hs0 Hs0.071 ..." >&2; exit 2; }
 HERE="$(cd "$(dirname "$0")" && pwd)"
-join_fo() { for d in $(ls "$1/postProcessing/$2" 2>/dev/null | sort -g); do grep -v '^#' "$1/postProcessing/$2/$d/$3"; done; }
+ROOT="${MPSDEM_DIR:-$(cd "$HERE/../../../.." && pwd)}"   # MPSDEM_DIR for a copied case
+# restarted runs: bin/tools/foJoin keeps the later run's rows
+join_fo() { "$ROOT/bin/tools/foJoin" "$1/postProcessing/$2" "$3"; }
 printf "%-8s %8s %7s %9s %7s %9s %7s %9s %7s %10s %9s %7s %7s %6s\n" Hs arrival vmax Fpeak tF P1peak tP Fspeak tS P1slope P1late water1 sed1 tend
 for c in "$@"; do
     hs=${c##*/}; hs=${hs#Hs}

@@ -16,7 +16,8 @@ ROOT="${MPSDEM_DIR:-$(cd "$(dirname "$0")/../../../.." && pwd)}"   # MPSDEM_DIR 
 EXP="$ROOT/data/kleefsman_spheric2/spheric_test2_marin_exp.csv"
 # a restarted run writes postProcessing/<name>/<startTime>/: join them in time order
 TMP="$(mktemp -d)"; trap 'rm -rf "$TMP"' EXIT
-join_fo() { for d in $(ls "$CASE/postProcessing/$1" 2>/dev/null | sort -g); do cat "$CASE/postProcessing/$1/$d/$2"; done; }
+# restarted runs: bin/tools/foJoin keeps the later run's rows
+join_fo() { "$ROOT/bin/tools/foJoin" "$CASE/postProcessing/$1" "$2"; }
 H="$TMP/waveGauges.dat"; P="$TMP/probes.dat"
 join_fo heights waveGauges.dat > "$H"; join_fo pressure probes.dat > "$P"
 for f in "$EXP" "$H" "$P"; do [ -s "$f" ] || { echo "compare.sh: $f missing or empty" >&2; exit 1; }; done

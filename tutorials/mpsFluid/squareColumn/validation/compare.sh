@@ -28,17 +28,8 @@ CASE=${1:-.}
 ROOT="${MPSDEM_DIR:-$(cd "$(dirname "$0")/../../../.." && pwd)}"   # MPSDEM_DIR for a copied case
 DATA="$ROOT/data/yeh_petroff_column"
 TMP="$(mktemp -d)"; trap 'rm -rf "$TMP"' EXIT
-# a restarted run writes postProcessing/<name>/<startTime>/: join them in
-# time order, each up to the next one's start time (a run restarted from an
-# earlier write repeats the times after it)
-join_fo() {
-    set -- $(ls "$CASE/postProcessing/$1" 2>/dev/null | sort -g | sed "s#^#$CASE/postProcessing/$1/#; s#\$#/$2#")
-    [ $# -gt 0 ] || return 0
-    awk 'FNR == 1 { k++; split(FILENAME, a, "/"); start[k] = a[length(a) - 1] }
-         !/^#/ { row[k, ++n[k]] = $0; t[k, n[k]] = $1 }
-         END { for (i = 1; i <= k; i++) for (r = 1; r <= n[i]; r++)
-                   if (i == k || t[i, r] + 0 <= start[i + 1] + 0) print row[i, r] }' "$@"
-}
+# restarted runs: bin/tools/foJoin keeps the later run's rows
+join_fo() { "$ROOT/bin/tools/foJoin" "$CASE/postProcessing/$1" "$2"; }
 join_fo load forces.dat > "$TMP/F"; join_fo P1 probes.dat > "$TMP/P"
 join_fo velocity probes.dat > "$TMP/U"; join_fo H1 waveGauges.dat > "$TMP/H"
 join_fo waterFront front.dat > "$TMP/X"
