@@ -86,11 +86,13 @@ void dem_walls_at(struct dem *d, double t)
             wall_place(&d->walls[w], &d->motions[d->walls[w].motion], t);
 }
 
-/* Walls within reach of each grain (distance < R + skin), valid as long as
- * the neighbour list is: the force loop then skips the far walls, as
- * LIGGGHTS' wall neighbour lists do. A moving wall is listed for every
- * grain: the list's skin bounds the grains' travel, not the wall's. */
-static int wall_candidates(struct dem *d)
+/* Walls within reach of each grain (distance < R + skin) at the positions
+ * x the list is built at (ARKode builds at its own state, not d->x),
+ * valid as long as the neighbour list is: the force loop then skips the
+ * far walls, as LIGGGHTS' wall neighbour lists do. A moving wall is
+ * listed for every grain: the list's skin bounds the grains' travel, not
+ * the wall's. */
+static int wall_candidates(struct dem *d, const double *x)
 {
     size_t k = 0;
     d->wstart[0] = 0;
@@ -99,7 +101,7 @@ static int wall_candidates(struct dem *d)
             const struct dem_wall *wa = &d->walls[w];
             int moves = d->motions && wa->motion >= 0 && !wa->removed
                         && wall_motion_moves(&d->motions[wa->motion]);
-            if (!moves && wall_distance(wa, &d->x[3 * i])
+            if (!moves && wall_distance(wa, &x[3 * i])
                               >= d->r[i] + d->nl.skin)
                 continue;
             if (k == d->wlist_cap) {
@@ -213,7 +215,7 @@ int dem_setup(struct dem *d)
     d->stats.rebuilds++;
     TRY(reserve_histories(d));
     pair_constants(d);
-    TRY(wall_candidates(d));
+    TRY(wall_candidates(d, d->x));
     memset(d->hist, 0, 3 * d->hist_cap * sizeof *d->hist);
     memset(d->whist, 0, 3 * d->whist_cap * sizeof *d->whist);
     dem_invalidate_forces(d);
@@ -273,7 +275,7 @@ static int rebuild(struct dem *d, const double *x, const size_t *map,
     if (rc == SIM_OK) {
         neighbour_half_carry(&d->nl, ostart, oj, row, oh, 3, d->hist);
         pair_constants(d);
-        rc = wall_candidates(d);
+        rc = wall_candidates(d, x);
     }
     d->stats.rebuilds++;
     return rc;
@@ -344,6 +346,34 @@ long dem_check_domain(struct dem *d)
     rc = rebuild(d, d->x, map, old_n);
     free(map);
     return rc == SIM_OK ? count : -1;
+}
+
+int dem_contact_near(const struct dem *d, const double *x, const double *v)
+{
+    if (d->ncontacts + d->nwall_contacts > 0)
+        return 1;
+    const double H = d->stop_horizon, cap = 0.5 * d->nl.skin;
+    if (!(H > 0))
+        return 0;
+    for (size_t i = 0; i < d->n && i < d->nl.n; i++) {
+        const double *xi = x + 3 * i, *vi = v + 3 * i;
+        double si = sqrt(vi[0] * vi[0] + vi[1] * vi[1] + vi[2] * vi[2]);
+        for (size_t p = d->nl.start[i]; p < d->nl.start[i + 1]; p++) {
+            size_t j = d->nl.j[p];
+            const double *vj = v + 3 * j;
+            double sj = sqrt(vj[0] * vj[0] + vj[1] * vj[1] + vj[2] * vj[2]);
+            double reach = d->r[i] + d->r[j] + fmin(cap, (si + sj) * H);
+            double d2 = 0;
+            for (int a = 0; a < 3; a++)
+                d2 += (x[3 * j + a] - xi[a]) * (x[3 * j + a] - xi[a]);
+            if (d2 < reach * reach)
+                return 1;
+        }
+        for (int wl = 0; wl < d->nwalls; wl++)
+            if (wall_distance(&d->walls[wl], xi) < d->r[i] + fmin(cap, si * H))
+                return 1;
+    }
+    return 0;
 }
 
 void dem_overlap_stats(struct dem *d, double frac, long *count,

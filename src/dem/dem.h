@@ -153,9 +153,19 @@ struct dem {
      * state, dem_invalidate_forces), so that Verlet re-evaluates only
      * then. */
     int forces_valid;
+    /* Set by integrator auto for one advance (integrator_auto.c): the
+     * advance may return before t_end, at the end of the first step that
+     * ends with a contact (DEM_STOP_CONTACT: arkode) or without one
+     * (DEM_STOP_FREE: verlet), a contact within stop_horizon counting
+     * (dem_contact_near); d->t tells where it stopped. 0: run to t_end. */
+    int stop_when;
+    double stop_horizon;          /* with stop_when: a contact this close
+                                     in time counts (dem_contact_near) [s] */
     struct dem_coupling cpl;
     struct dem_stats stats;
 };
+
+enum { DEM_STOP_CONTACT = 1, DEM_STOP_FREE = 2 };
 
 void dem_init(struct dem *d);
 void dem_free(struct dem *d);
@@ -210,6 +220,15 @@ int dem_update_neighbours(struct dem *d, const double *x);
 /* Rebuild now (at a write time, so that the state a restart starts from
  * is exactly the continuing run's: same list, same reference positions). */
 int dem_rebuild_neighbours(struct dem *d);
+
+/* Non-zero when the last committing evaluation found a contact, or when
+ * at the state (x, v) it was at some grain could touch another or a wall
+ * within d->stop_horizon at the speeds it has (a gap below (|v_i| +
+ * |v_j|) horizon, at most half the skin): the test of integrator auto's
+ * stretches (d->stop_when). The neighbour list must be valid for x; a
+ * pair it does not hold (farther than the skin at the build) is not seen
+ * until it touches. */
+int dem_contact_near(const struct dem *d, const double *x, const double *v);
 
 /* Overlap statistics for the start-up check: number of pairs (and wall
  * contacts) overlapping by more than frac of the smaller radius, and the

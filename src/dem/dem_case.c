@@ -287,12 +287,17 @@ int dem_read_solution(const struct dict *sol, struct dem *d,
                      (const void *const *)dem_integrator_table, "arkode", &m));
     s->integrator = m;
     /* the coefficients of the integrator not selected may stay in the
-     * file (switching is one word), so they are not reported unused */
-    mark_all_used(sol, s->integrator == &dem_integrator_arkode
-                           ? "verletCoeffs" : "arkodeCoeffs");
-    if (s->integrator == &dem_integrator_arkode)
+     * file (switching is one word), so they are not reported unused;
+     * auto reads both */
+    int ark = s->integrator != &dem_integrator_verlet;
+    int verlet = s->integrator != &dem_integrator_arkode;
+    if (!verlet)
+        mark_all_used(sol, "verletCoeffs");
+    if (!ark)
+        mark_all_used(sol, "arkodeCoeffs");
+    if (ark)
         TRY(read_arkode(sol, d, s));
-    else
+    if (verlet)
         TRY(read_verlet(sol, d, s));
     TRY(dict_get_scalar_dim_or(sol, "neighbour/skin", dims_length,
                                0.2 * d->rmax, &d->nl.skin));

@@ -1,6 +1,6 @@
 /*
  * integrator.h — DEM time integrators, selected by name in
- * system/demSolution (`integrator arkode;` or `verlet;`).
+ * system/demSolution (`integrator arkode;`, `verlet;` or `auto;`).
  *
  * An integrator advances a struct dem from d->t to a given time exactly
  * (every coupling and output time is a stop time), leaves the tangential
@@ -57,6 +57,7 @@ struct dem_integrator_ops {
 
 extern const struct dem_integrator_ops dem_integrator_verlet;
 extern const struct dem_integrator_ops dem_integrator_arkode;
+extern const struct dem_integrator_ops dem_integrator_auto;
 extern const struct dem_integrator_ops *const dem_integrator_table[];
 
 #endif

@@ -776,6 +776,11 @@ static int ark_advance(void *ctx, struct dem *d, double t_end)
         }
         if (flag == ARK_TSTOP_RETURN)
             break;
+        /* integrator auto: a contact, or a gap closing to one, ends the
+         * ballistic stretch (the commit of this step counted the contacts
+         * at its end) */
+        if (d->stop_when == DEM_STOP_CONTACT && dem_contact_near(d, yy, yy + n3))
+            break;
     }
     long ex1, acc1, rej1;
     ERKStepGetTimestepperStats(a->mem, &ex1, &acc1, &att, &fe, &rej1);
@@ -785,12 +790,13 @@ static int ark_advance(void *ctx, struct dem *d, double t_end)
     yy = N_VGetArrayPointer(a->y);
     for (size_t k = 0; k < n3; k++)
         d->cpl.fd_sum[k] += a->impulse ? yy[3 * n3 + k] : 0.0;
+    double t_stop = t < t_end ? t : t_end;
     if (d->cpl.drag)
-        d->cpl.sum_time += t_end - d->t;
+        d->cpl.sum_time += t_stop - d->t;
     memcpy(d->x, yy, n3 * sizeof *yy);
     memcpy(d->v, yy + n3, n3 * sizeof *yy);
     memcpy(d->w, yy + 2 * n3, n3 * sizeof *yy);
-    d->t = t_end;
+    d->t = t_stop;
     return SIM_OK;
 }
 

@@ -4,4 +4,5 @@
 #include "dem/integrators/integrator.h"
 
 const struct dem_integrator_ops *const dem_integrator_table[] = {
-    &dem_integrator_arkode, &dem_integrator_verlet, NULL};
+    &dem_integrator_arkode, &dem_integrator_verlet, &dem_integrator_auto,
+    NULL};

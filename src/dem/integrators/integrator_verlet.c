@@ -11,7 +11,8 @@
  *
  * The step is dt = dt_fraction * dt_R (eq. 38) unless given; a given step
  * above dt_R is refused with the bound. Each advance ends exactly at t_end
- * by shortening all its steps equally (never by one small last step).
+ * by shortening all its steps equally (never by one small last step), or
+ * for integrator auto at the first step that ends with no contact near.
  *
  * a^{n+1} is kept for the first half kick of the next advance: N steps
  * cost N force evaluations however many advances they are split into
@@ -121,6 +122,8 @@ static int verlet_advance(void *ctx, struct dem *d, double t_end)
         accumulate_drag(d, h, h);
         d->t = tn;
         d->stats.steps++;
+        if (d->stop_when == DEM_STOP_FREE && !dem_contact_near(d, d->x, d->v))
+            break;   /* the forces are those of this state: kept */
     }
     d->forces_valid = 1;
     vl->n = d->n;

@@ -14,7 +14,11 @@
  *     (oblique_reference.h; the springs are in the error-controlled
  *     state, slip phases located exactly), Verlet's with dt;
  *   - Verlet keeps the forces between advances: N steps cost N + 1 force
- *     evaluations however they are split, with bit-identical results.
+ *     evaluations however they are split, with bit-identical results;
+ *   - auto (ARKode out of contact, Verlet in it): a bouncing bead keeps
+ *     e = 0.9 with far fewer evaluations than Verlet, the drag of the
+ *     coupling is averaged over the whole interval across the hand-overs;
+ *     a pack in contact throughout is Verlet's to the bit.
  */
 #include <setjmp.h>
 #include <stdarg.h>
@@ -359,12 +363,13 @@ static void test_oblique_impact_order(void **state)
         }
 }
 
-/* Issue 15 item 7: 27 grains settling in a box with Verlet at a step of
+/* 27 grains settling in a box with Verlet at a step of
  * 2^-17 s, 1024 steps as one advance or as 64 advances of 16 steps (all
  * times exact binary fractions, so both take identical steps): the same
  * 1025 force evaluations and bit-identical grains (the forces of the last
  * step are kept, not re-evaluated at the start of an advance). */
-static void verlet_split(int nadv, double *out, struct dem_stats *st)
+static void packed(const struct dem_integrator_ops *ops, int nadv,
+                   double *out, struct dem_stats *st)
 {
     struct dem d;
     dem_init(&d);
@@ -387,16 +392,16 @@ static void verlet_split(int nadv, double *out, struct dem_stats *st)
     struct dem_integrator_params p = th_params();
     p.dt = ldexp(1.0, -17);
     void *ctx;
-    assert_int_equal(dem_integrator_verlet.create(&d, &p, &ctx), SIM_OK);
+    assert_int_equal(ops->create(&d, &p, &ctx), SIM_OK);
     for (int k = 1; k <= nadv; k++)
-        assert_int_equal(dem_integrator_verlet.advance(
-                             ctx, &d, ldexp(1.0, -7) * k / nadv), SIM_OK);
+        assert_int_equal(ops->advance(ctx, &d, ldexp(1.0, -7) * k / nadv),
+                         SIM_OK);
     memcpy(out, d.x, 81 * sizeof *out);
     memcpy(out + 81, d.v, 81 * sizeof *out);
     memcpy(out + 162, d.w, 81 * sizeof *out);
     *st = d.stats;
     assert_true(d.ncontacts + d.nwall_contacts > 10);
-    dem_integrator_verlet.destroy(ctx);
+    ops->destroy(ctx);
     dem_free(&d);
 }
 
@@ -405,8 +410,8 @@ static void test_verlet_keeps_forces(void **state)
     (void)state;
     double a[243], b[243];
     struct dem_stats sa, sb;
-    verlet_split(1, a, &sa);
-    verlet_split(64, b, &sb);
+    packed(&dem_integrator_verlet, 1, a, &sa);
+    packed(&dem_integrator_verlet, 64, b, &sb);
     printf("  1 advance: %ld steps, %ld evaluations; 64 advances: %ld steps,"
            " %ld evaluations; identical: %s\n", sa.steps, sa.fevals,
            sb.steps, sb.fevals, memcmp(a, b, sizeof a) ? "no" : "yes");
@@ -415,6 +420,84 @@ static void test_verlet_keeps_forces(void **state)
     assert_int_equal(sa.fevals, 1025);
     assert_int_equal(sb.fevals, 1025);
     assert_memory_equal(a, b, sizeof a);
+}
+
+/* The same pack with auto: in contact at every step, so Verlet's steps
+ * from the first (no hand-over), to the bit. */
+static void test_auto_packed_is_verlet(void **state)
+{
+    (void)state;
+    double a[243], b[243];
+    struct dem_stats sa, sb;
+    packed(&dem_integrator_verlet, 8, a, &sa);
+    packed(&dem_integrator_auto, 8, b, &sb);
+    assert_int_equal(sa.steps, sb.steps);
+    assert_int_equal(sa.fevals, sb.fevals);
+    assert_memory_equal(a, b, sizeof a);
+}
+
+/* A bead dropped from 5 cm on the floor under a weak linear drag
+ * (relaxation time 100 s), 0.2 s in 8 advances: one bounce near 0.1 s.
+ * The rebound speed, from the energy of the flight after it, is e = 0.9
+ * times the impact speed (restitution damping returns e) to 0.1 %, as
+ * with ARKode alone (to 1e-3); auto takes a tenth of Verlet's
+ * evaluations at the same fraction; the drag is averaged over all of
+ * every interval, the one with the two hand-overs included. */
+static void bounce(const struct dem_integrator_ops *ops, double *vreb,
+                   double *vimp, long *evals)
+{
+    struct dem d;
+    dem_init(&d);
+    assert_int_equal(th_law(&d, &contact_normal_hertz,
+                            &contact_damping_restitution,
+                            &contact_tangential_coulomb,
+                            &contact_rolling_none, T1_MU, 0.9), SIM_OK);
+    assert_int_equal(th_grains(&d, 1), SIM_OK);
+    th_floor(&d);
+    d.x[2] = 0.05;
+    assert_int_equal(dem_setup(&d), SIM_OK);
+    double uf[3] = {0, 0, 0}, eps = 1, fd[3];
+    struct drag_ctx dc = {.c = d.m[0] / 100.0};
+    dem_coupling_set(&d, NULL, uf, &eps, linear_drag, &dc);
+    struct dem_integrator_params p = th_params();
+    p.rtol = 1e-8, p.atol_x = 1e-12, p.atol_v = 1e-9;
+    p.dt_fraction = 0.02;
+    void *ctx;
+    assert_int_equal(ops->create(&d, &p, &ctx), SIM_OK);
+    double vmin = 0;
+    for (int k = 1; k <= 8; k++) {
+        double t0 = d.t;
+        assert_int_equal(ops->advance(ctx, &d, 0.025 * k), SIM_OK);
+        assert_true(d.t == 0.025 * k);
+        assert_true(rel(dem_mean_drag(&d, fd), d.t - t0) < 1e-12);
+        dem_coupling_set(&d, NULL, uf, &eps, linear_drag, &dc);
+        if (k == 3)   /* 0.075 s: falling; the impact speed from energy */
+            vmin = sqrt(d.v[2] * d.v[2] + 2 * 9.81 * (d.x[2] - T1_R));
+    }
+    assert_true(d.x[2] > T1_R + 0.01);   /* in flight after the bounce */
+    *vimp = vmin;
+    *vreb = sqrt(d.v[2] * d.v[2] + 2 * 9.81 * (d.x[2] - T1_R));
+    *evals = d.stats.fevals + d.stats.hist_evals;
+    ops->destroy(ctx);
+    dem_free(&d);
+}
+
+static void test_auto_bounce(void **state)
+{
+    (void)state;
+    const struct dem_integrator_ops *const ops[3] = {
+        &dem_integrator_auto, &dem_integrator_arkode, &dem_integrator_verlet};
+    double vr[3], vi[3];
+    long ev[3];
+    for (int k = 0; k < 3; k++) {
+        bounce(ops[k], &vr[k], &vi[k], &ev[k]);
+        printf("  %s: rebound/impact speed %.5f, %ld evaluations\n",
+               ops[k]->name, vr[k] / vi[k], ev[k]);
+    }
+    /* the weak drag takes ~5e-4 of the speeds over the flights */
+    assert_true(fabs(vr[0] / vi[0] - 0.9) < 1e-3);
+    assert_true(fabs(vr[0] / vi[0] - vr[1] / vi[1]) < 1e-3);
+    assert_true(ev[0] < ev[2] / 10);
 }
 
 int main(void)
@@ -427,6 +510,8 @@ int main(void)
         cmocka_unit_test(test_coupling_drag),
         cmocka_unit_test(test_oblique_impact_order),
         cmocka_unit_test(test_verlet_keeps_forces),
+        cmocka_unit_test(test_auto_packed_is_verlet),
+        cmocka_unit_test(test_auto_bounce),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
