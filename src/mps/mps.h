@@ -254,6 +254,12 @@ int mps_settings_read(const struct dict *transport, const struct dict *g,
                       const struct dict *schemes, const struct dict *solution,
                       struct mps_settings *S);
 
+/* Radius of the neighbour list [m]: the largest operator radius plus the
+ * skin (half a spacing with the predictor when no skin is set). What a
+ * particle's sums can reach within one list's life: also the halo a
+ * distributed run exchanges (particles/decompose.h). */
+double mps_list_radius(const struct mps_settings *S, double dp);
+
 /* One step of size dt [s]. Errors: SIM_ERR_SOLVER (PPE not converged),
  * SIM_ERR_NUMERIC (NaN: message names step, particle id and field),
  * SIM_ERR_INPUT (too many particles escaped). */

@@ -45,7 +45,7 @@ static double radius_max(const struct mps_settings *S, double dp)
     return dp * fmax(S->re_n, fmax(S->re_grad, S->re_lap));
 }
 
-static double list_radius(const struct mps_settings *S, double dp)
+double mps_list_radius(const struct mps_settings *S, double dp)
 {
     return radius_max(S, dp) + dp * (S->skin > 0 ? S->skin
                                      : S->predictor ? 0.5 : 0.0);
@@ -88,7 +88,7 @@ int mps_check_extent(const struct mps_particles *P,
                      const struct mps_settings *S, double dp,
                      const char *origin)
 {
-    double lo[3], hi[3], h = list_radius(S, dp), cells = 1, worst = 0;
+    double lo[3], hi[3], h = mps_list_radius(S, dp), cells = 1, worst = 0;
     int axis = 0;
     box_of(P, radius_max(S, dp), lo, hi);
     for (int k = 0; k < P->dim; k++) {
@@ -183,7 +183,7 @@ int mps_solver_init(struct mps_solver *s, struct mps_particles *P,
     /* With the predictor, pairs are re-measured at r* = r + dt u*: a skin
      * of half a spacing keeps pairs that come into range (a Courant
      * number below 0.25 moves two particles together by < 0.5 dp). */
-    s->r_list = list_radius(S, dp);
+    s->r_list = mps_list_radius(S, dp);
     log_info("MPS lattice (%d-D, dp = %g m, kernel %s):", d, dp, K->name);
     log_info("    number density r_e = %g dp: n0 = %.6f, %d neighbours, "
              "|F0| = %.4f", S->re_n, s->Ln.n0, s->Ln.nnb, s->Ln.f0);
