@@ -369,8 +369,9 @@ int dem_contact_near(const struct dem *d, const double *x, const double *v)
             if (d2 < reach * reach)
                 return 1;
         }
+        const double wreach = d->r[i] + fmin(cap, si * H);
         for (int wl = 0; wl < d->nwalls; wl++)
-            if (wall_distance(&d->walls[wl], xi) < d->r[i] + fmin(cap, si * H))
+            if (wall_distance(&d->walls[wl], xi) < wreach)
                 return 1;
     }
     return 0;

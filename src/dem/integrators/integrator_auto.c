@@ -7,21 +7,21 @@
  * grain, and a contact bounds it by the contact's stability limit
  * (safety x 2/omega, integrator_arkode.c), where each step costs the six
  * evaluations of the Dormand-Prince pair against Verlet's one per
- * rayleighFraction x dt_R: in contact Verlet is the cheaper of the two at
- * the accuracy the coupled cases ask, out of contact (flights, settling
- * under drag and gravity) ARKode's step grows with the smoothness of the
- * motion and Verlet's stays at the contact time scale
- * (test/bench/demWorkPrecision: 10-50 times fewer evaluations there).
+ * rayleighFraction x dt_R; its steps into a contact, resolved by error
+ * control, cost more still. Out of contact (flights, settling under drag
+ * and gravity) ARKode's step grows with the smoothness of the motion and
+ * Verlet's stays at the contact time scale (test/bench/README.dem.md).
  *
  * Each advance runs the integrator of the current state until its
  * stretch ends: ARKode returns at the end of the first step that ends
- * with a contact, Verlet at the end of the first step that ends with none
- * (dem->stop_when); the other one takes over from that state. The first
- * decision of a run (no force evaluation yet, e.g. after a restart) counts
- * overlaps geometrically; later ones read the contact counts of the last
- * committing evaluation, which was at the current state. A switch clears
- * the kept forces (Verlet evaluates afresh) and ARKode, seeing a state
- * it did not leave, sets itself up from the grains and their springs.
+ * near a contact, Verlet at the end of the first step that ends near
+ * none (dem->stop_when, dem_contact_near); the other one takes over from
+ * that state. The first decision of a run (no force evaluation yet, e.g.
+ * after a restart) counts overlaps geometrically; later ones read the
+ * contact counts of the last committing evaluation, which was at the
+ * current state. A switch clears the kept forces (Verlet evaluates
+ * afresh) and ARKode, seeing a state it did not leave, sets itself up
+ * from the grains and their springs.
  * Both sub-integrators read their own coefficients (arkodeCoeffs,
  * verletCoeffs).
  */
@@ -43,7 +43,6 @@ struct auto_int {
     int ark_wlist, verlet_wlist;   /* use_wlist each one asks for */
     double dt_verlet;              /* Verlet's step (its create's rule) */
     const struct dem_integrator_ops *last;
-    long switches;
 };
 
 static int auto_create(struct dem *d, const struct dem_integrator_params *p,
@@ -94,8 +93,6 @@ static int auto_advance(void *ctx, struct dem *d, double t_end)
         const struct dem_integrator_ops *op = contact ? &dem_integrator_verlet
                                                       : &dem_integrator_arkode;
         if (op != a->last) {
-            if (a->last)
-                a->switches++;
             dem_invalidate_forces(d);
             d->use_wlist = contact ? a->verlet_wlist : a->ark_wlist;
             a->last = op;

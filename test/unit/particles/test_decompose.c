@@ -123,7 +123,8 @@ static void halo_case(int dim, int n, int k, double rc)
                 continue;
             double d2 = 0;
             for (int a = 0; a < 3; a++)
-                d2 += (x[3 * i + a] - x[3 * j + a]) * (x[3 * i + a] - x[3 * j + a]);
+                d2 += (x[3 * i + a] - x[3 * j + a])
+                    * (x[3 * i + a] - x[3 * j + a]);
             if (d2 < rc * rc) {
                 in[(size_t)part[i] * n + j] = 1;
                 nb[part[i] * k + part[j]] = 1;
