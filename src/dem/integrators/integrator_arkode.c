@@ -779,9 +779,11 @@ static int ark_advance(void *ctx, struct dem *d, double t_end)
         /* integrator auto: a contact, or a gap closing to one, ends the
          * ballistic stretch (the commit of this step counted the contacts
          * at its end) */
-        if (d->stop_when == DEM_STOP_CONTACT
-            && dem_contact_near(d, yy, yy + n3))
-            break;
+        if (d->stop_when == DEM_STOP_CONTACT) {
+            yy = N_VGetArrayPointer(a->y);   /* relayout replaces a->y */
+            if (dem_contact_near(d, yy, yy + n3))
+                break;
+        }
     }
     long ex1, acc1, rej1;
     ERKStepGetTimestepperStats(a->mem, &ex1, &acc1, &att, &fe, &rej1);
