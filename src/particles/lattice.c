@@ -13,6 +13,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "core/dict.h"
 #include "core/error.h"
 
 const char *const lattice_kind_names[] = { "cubic", "hexagonal", NULL };
@@ -174,4 +175,18 @@ void lattice_jitter(double *x, size_t n, int dim, double amplitude,
             x[3 * i + d] += amplitude * (2.0 * u - 1.0);
         }
     }
+}
+
+int lattice_read_patches(const struct dict *patches, int *dim, double *dp)
+{
+    long d;
+    TRY(dict_get_label(patches, "dimension", &d));
+    if (d != 2 && d != 3)
+        return dict_error(patches, "dimension", SIM_ERR_DICT,
+                          "dimension must be 2 or 3");
+    TRY(dict_get_scalar(patches, "dp", dp));
+    if (!(*dp > 0))
+        return dict_error(patches, "dp", SIM_ERR_DICT, "dp must be > 0");
+    *dim = (int)d;
+    return SIM_OK;
 }

@@ -60,4 +60,10 @@ int lattice_fill(const struct lattice *l, const double lo[3],
 void lattice_jitter(double *x, size_t n, int dim, double amplitude,
                     uint64_t seed);
 
+/* The lattice genParticles wrote into constant/particlePatches: its
+ * dimension (2 or 3) and spacing dp (> 0); errors cite the file and line.
+ * The keys patches, types, wallLayers are the caller's. */
+struct dict;
+int lattice_read_patches(const struct dict *patches, int *dim, double *dp);
+
 #endif

@@ -38,6 +38,7 @@
 #include "io/vtu.h"
 #include "functionObjects/mps_functionObjects.h"
 #include "mps/mps.h"
+#include "particles/lattice.h"
 #include "mps/soil/soil.h"
 #include "solver/solver.h"
 
@@ -67,18 +68,10 @@ struct fluid {
 /* constant/particlePatches: patch names, dimension and dp of the lattice. */
 static int read_patches(struct fluid *f)
 {
-    long dim;
     TRY(app_read_dict(&f->sv.app, "constant/particlePatches", &f->patches));
     TRY(dict_get_words(f->patches, "patches", MAX_PATCHES, f->patch_names,
                        &f->npatches));
-    TRY(dict_get_label(f->patches, "dimension", &dim));
-    if (dim != 2 && dim != 3)
-        return dict_error(f->patches, "dimension", SIM_ERR_DICT,
-                          "dimension must be 2 or 3");
-    f->dim = (int)dim;
-    TRY(dict_get_scalar(f->patches, "dp", &f->dp));
-    if (!(f->dp > 0))
-        return dict_error(f->patches, "dp", SIM_ERR_DICT, "dp must be > 0");
+    TRY(lattice_read_patches(f->patches, &f->dim, &f->dp));
     dict_mark_used(f->patches, "types");
     dict_mark_used(f->patches, "wallLayers");
     return SIM_OK;

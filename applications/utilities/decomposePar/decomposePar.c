@@ -38,6 +38,7 @@
 #include "io/vtu.h"
 #include "mps/mps.h"
 #include "particles/decompose.h"
+#include "particles/lattice.h"
 
 static const struct model_head method_rcb = {
     "rcb", "recursive coordinate bisection, Berger & Bokhari 1987"};
@@ -57,7 +58,6 @@ static int read_settings(const struct app *a, const char *subdomains,
     struct dict *dec = NULL, *pat = NULL, *tr = NULL, *sch = NULL;
     int rc = app_read_dict(a, "system/decomposeParDict", &dec);
     int method;
-    long dim;
     if (!rc) rc = dict_get_label(dec, "numberOfSubdomains", &s->nparts);
     if (!rc && subdomains) {
         char *end;
@@ -80,21 +80,13 @@ static int read_settings(const struct app *a, const char *subdomains,
     /* the lattice (genParticles) and the list radius (mpsFluid's
      * settings: the same reading as the solver's) */
     if (!rc) rc = app_read_dict(a, "constant/particlePatches", &pat);
-    if (!rc) rc = dict_get_label(pat, "dimension", &dim);
-    if (!rc && dim != 2 && dim != 3)
-        rc = dict_error(pat, "dimension", SIM_ERR_DICT, "dimension must be "
-                        "2 or 3");
-    if (!rc) rc = dict_get_scalar(pat, "dp", &s->dp);
-    if (!rc && !(s->dp > 0))
-        rc = dict_error(pat, "dp", SIM_ERR_DICT, "dp must be > 0");
+    if (!rc) rc = lattice_read_patches(pat, &s->dim, &s->dp);
     if (!rc) rc = app_read_dict(a, "constant/transportProperties", &tr);
     if (!rc) rc = app_read_dict(a, "system/mpsSchemes", &sch);
     struct mps_settings S;
     if (!rc) rc = mps_settings_read(tr, NULL, sch, NULL, &S);
-    if (!rc) {
-        s->dim = (int)dim;
+    if (!rc)
         s->rc = mps_list_radius(&S, s->dp);
-    }
     dict_free(dec);
     dict_free(pat);
     dict_free(tr);

@@ -17,9 +17,9 @@
  * near a contact, Verlet at the end of the first step that ends near
  * none (dem->stop_when, dem_contact_near); the other one takes over from
  * that state. The first decision of a run (no force evaluation yet, e.g.
- * after a restart) counts overlaps geometrically; later ones read the
- * contact counts of the last committing evaluation, which was at the
- * current state. A switch clears the kept forces (Verlet evaluates
+ * after a restart) is geometric alone; later ones also read the contact
+ * counts of the last committing evaluation, which was at the current
+ * state. A switch clears the kept forces (Verlet evaluates
  * afresh) and ARKode, seeing a state it did not leave, sets itself up
  * from the grains and their springs.
  * Both sub-integrators read their own coefficients (arkodeCoeffs,
@@ -69,17 +69,14 @@ static int auto_create(struct dem *d, const struct dem_integrator_params *p,
     return SIM_OK;
 }
 
+/* With nothing evaluated yet the contact counts are empty, and the
+ * geometric test of dem_contact_near (an overlap is within any horizon)
+ * decides alone, on a list valid for the start state. */
 static int in_contact(struct dem *d, int *contact)
 {
-    if (d->stats.fevals == 0) {   /* nothing evaluated yet */
-        long c = 0;
-        double mr;
+    if (d->stats.fevals == 0)
         TRY(dem_update_neighbours(d, d->x));
-        dem_overlap_stats(d, 0.0, &c, &mr);
-        *contact = c > 0 || dem_contact_near(d, d->x, d->v);
-    } else {
-        *contact = dem_contact_near(d, d->x, d->v);
-    }
+    *contact = dem_contact_near(d, d->x, d->v);
     return SIM_OK;
 }
 
