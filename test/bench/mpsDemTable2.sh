@@ -80,6 +80,8 @@ for dp in "${dps[@]}"; do
         for k in reNumberDensity reGradient reLaplacian; do
             sed -i "s/^$k .*/$k $RE;/" "$c/system/mpsSchemes"
         done
+        # the release generates its particles: dummies for the radius
+        sed -i "s/^kernelRadius .*/kernelRadius $RE;/" "$c/system/particleDict"
     fi
     echo "channel mpsdem-table2-$$;" >> "$c/system/couplingDict"
     if [ "$PPE" = symmetric ]; then

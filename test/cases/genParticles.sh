@@ -166,6 +166,11 @@ expect counts_2d_type "$(counts c2 0/fluid.vtu type)" "type 0:50 1:52 2:116"
 expect counts_2d_grains "$(counts c2 0/dem.vtu group)" "group 2:86"
 near pressure_2d_max "$(field_range c2 0/fluid.vtu pressure 0 | cut -d' ' -f2)" 931.95 1e-9
 expect z_2d "$(field_range c2 0/dem.vtu velocity 2) $("$INFO" -case "$TMP/c2" 0/fluid.vtu | awk '$1 == "bounds" { print $4, $7 }')" "0 0 0 0"
+# an r_e of system/mpsSchemes beyond kernelRadius: a warning at the key
+printf 'reLaplacian 3.1;\n' > "$TMP/c2/system/mpsSchemes"
+if run c2 && grep -q "particleDict:4:[0-9]*: kernelRadius 2.1 is smaller than the largest r_e 3.1 of system/mpsSchemes" "$TMP/c2.log"
+then pass kernel_radius_short; else fail kernel_radius_short "no warning for kernelRadius 2.1 under reLaplacian 3.1: $(grep -i kernelRadius "$TMP/c2.log")"; fi
+rm "$TMP/c2/system/mpsSchemes"
 
 # ---- a soil region (doc/theory.md K): phase 1 for its particles, and a
 # saturated layer under water: p = rho_s g (top - y) + rho g (h_w - top)

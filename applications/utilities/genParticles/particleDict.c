@@ -11,6 +11,7 @@
 #include "core/app.h"
 #include "core/dict.h"
 #include "core/error.h"
+#include "core/log.h"
 #include "genParticles.h"
 #include "particles/motion/motion.h"
 
@@ -337,6 +338,18 @@ static int read_layers(struct gen_case *c, double kernel_radius_hint)
     if (kr > 100)
         return dict_error(c->d, "kernelRadius", SIM_ERR_DICT, "kernelRadius "
                           "%g (in units of dp) is not plausible", kr);
+    /* A radius raised in system/mpsSchemes and not here would leave the
+     * walls' kernel support short of dummies: mpsFluid only finds out at
+     * its start, after the case has been generated. */
+    if (kr < kernel_radius_hint - 1e-9) {
+        char where[512];
+        log_warn("%s: kernelRadius %g is smaller than the largest r_e %g of "
+                 "system/mpsSchemes: wallLayers auto makes %d layer(s), too "
+                 "few for r_e %g (set kernelRadius %g, or remove it)",
+                 dict_where(c->d, "kernelRadius", where, sizeof where), kr,
+                 kernel_radius_hint, (int)ceil(kr - 1e-9), kernel_radius_hint,
+                 kernel_radius_hint);
+    }
     /* One wall layer and ceil(re/dp) - 1 dummy layers (doc/theory.md A.9). */
     c->layers = (int)ceil(kr - 1e-9);
     return SIM_OK;
