@@ -225,6 +225,7 @@ int mps_solver_init(struct mps_solver *s, struct mps_particles *P,
     s->setup_rows = 0;
     s->dummy_rows = s->S.dummy_pressure == MPS_DUMMY_P_EXTRAPOLATED;
     TRY(build_list(s));
+    TRY(mps_weights(s));
     TRY(mps_soil_init(s));
     return SIM_OK;
 }
@@ -376,7 +377,24 @@ static int build_list(struct mps_solver *s)
     TRY(neighbour_build_skin(&s->nl, &s->grid, P->x, s->re_max,
                              s->r_list - s->re_max));
     memcpy(s->x_ref, P->x, sizeof *P->x * 3 * P->n);
-    return mps_weights(s);
+    return SIM_OK;
+}
+
+/* The weights a step reads at r^m. With the predictor (and neither soil
+ * nor the volume exchange, which read w_n there) that is the Laplacian's
+ * alone, for the viscous term: the number density and the gradient are
+ * first read at r*, where predict_positions computes every weight again.
+ * One kernel pass over the pairs less per step; w_n and w_g are stale
+ * (the last r*'s, on another list) until then. */
+static int step_weights(struct mps_solver *s)
+{
+    const struct mps_settings *S = &s->S;
+    if (!S->predictor || s->soil || S->phi_relax_time > 0
+        || s->w_l == s->w_n || s->w_l == s->w_g)
+        return mps_weights(s);
+    TRY(grow_weights(s));
+    S->kernel->weights(s->nl.r, s->nl.nnz, S->re_lap * s->dp, s->w_l);
+    return SIM_OK;
 }
 
 int mps_neighbours(struct mps_solver *s)
@@ -392,7 +410,7 @@ int mps_neighbours(struct mps_solver *s)
     const double cell_h = s->r_list;
     if (list_still_valid(s)) {
         TRY(neighbour_update(&s->nl, P->x));   /* pairs within re_max only */
-        return mps_weights(s);
+        return step_weights(s);
     }
     s->n_builds++;
     s->t.builds++;
@@ -423,7 +441,8 @@ int mps_neighbours(struct mps_solver *s)
         TRY(cells_build(&s->grid, P->dim, P->x, P->n, cell_h, s->box_lo,
                         s->box_hi));
     }
-    return build_list(s);
+    TRY(build_list(s));
+    return s->setup_rows ? SIM_OK : step_weights(s);
 }
 
 int mps_weights(struct mps_solver *s)
