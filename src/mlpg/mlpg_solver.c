@@ -7,7 +7,13 @@
  *   3. rows of mlpg.h with g_s = (rho/dt) n_s.(u*_K - U_K) (S-2); the pinned
  *      node p = pRefValue
  *   4. solve; u = u* - (dt/rho) grad p (SFDI) on fluid nodes, U on walls
- *   5. Lagrangian: r += u dt
+ *   5. Lagrangian: r += u dt (eq. 4.9), or with positionUpdate secondOrder
+ *      r += u dt + (dt^2/2) (u.grad) u, u = u^{n+1}, SFDI gradient: the
+ *      Taylor expansion of the flow map to second order. For div u = 0
+ *      the area map of eq. 4.9, det(I + dt grad u) = 1 + dt^2 det grad u,
+ *      shrinks the water by dt^2 |grad u|^2 per step where the flow is
+ *      irrotational; the second-order term cancels that dt^2 part
+ *      (doc/theory.md M0-26, M0-27)
  */
 #include <math.h>
 #include <stdlib.h>
@@ -54,6 +60,13 @@ static const struct model_head shift_lind = { "lind2012",
 static const struct model_head *const shift_table[] = { &shift_none,
                                                         &shift_lind, NULL };
 
+static const struct model_head move_end = { "endVelocity",
+    "Pan 2022 eq. 4.9: r += u^{n+1} dt" };
+static const struct model_head move_trap = { "secondOrder",
+    "r += u dt + (dt^2/2) (u.grad) u (doc/theory.md M0-27)" };
+static const struct model_head *const move_table[] = { &move_end,
+                                                       &move_trap, NULL };
+
 static const struct model_head self_mls = { "approximant", "Pan 2022 eq. 4.23" };
 static const struct model_head self_nodal = { "nodal", "doc/theory.md M0-03" };
 static const struct model_head *const self_table[] = {
@@ -68,6 +81,8 @@ const struct model_choice mlpg_solver_choices[] = {
     { "system/mlpgSchemes", "wallCondition",
       (const void *const *)slip_table },
     { "system/mlpgSchemes", "shifting", (const void *const *)shift_table },
+    { "system/mlpgSchemes", "positionUpdate",
+      (const void *const *)move_table },
     { NULL, NULL, NULL }
 };
 
@@ -101,6 +116,9 @@ int mlpg_settings_read(const struct dict *transport,
     TRY(model_select_index(schemes, "shifting", "node shifting",
                            (const void *const *)shift_table, "none",
                            &S->shift));
+    TRY(model_select_index(schemes, "positionUpdate", "position update",
+                           (const void *const *)move_table, "endVelocity",
+                           &S->move));
     const struct dict *coeffs = NULL;
     S->shift_coeff = 0.01;
     if (S->shift == MLPG_SHIFT_LIND2012)
@@ -485,10 +503,27 @@ int mlpg_solver_init(struct mlpg_solver *s, const struct mlpg_settings *S,
     return SIM_OK;
 }
 
+/* (u.grad) u at node i, SFDI gradient (C.7) on the step's coefficients */
+static void advection(const struct mlpg_solver *s, int i, double adv[2])
+{
+    double gx[2] = { 0, 0 }, gy[2] = { 0, 0 };
+    for (int64_t e = s->coef_start[i] + 1; e < s->coef_start[i + 1]; e++) {
+        int j = s->cand[e];
+        for (int q = 0; q < 2; q++) {
+            double du = s->u[3 * j + q] - s->u[3 * i + q];
+            gx[q] += s->sfdi[e][0] * du;
+            gy[q] += s->sfdi[e][1] * du;
+        }
+    }
+    for (int q = 0; q < 2; q++)
+        adv[q] = s->u[3 * i] * gx[q] + s->u[3 * i + 1] * gy[q];
+}
+
 int mlpg_step(struct mlpg_solver *s, double dt)
 {
     const struct mlpg_settings *S = &s->S;
     const int fixed = S->nodes == MLPG_NODES_FIXED, n = s->n;
+    const int trap = !fixed && S->move == MLPG_MOVE_TRAPEZOIDAL;
     double t0 = app_wall_time(), tnew = s->time + dt;
     s->last_dt = dt;
     if (!fixed && s->t.steps > 0) /* Lagrangian: the nodes moved */
@@ -508,22 +543,16 @@ int mlpg_step(struct mlpg_solver *s, double dt)
 #pragma omp parallel for schedule(static)
     for (int i = 0; i < n; i++) {
         int64_t e0 = s->coef_start[i], e1 = s->coef_start[i + 1];
-        double lap[2] = { 0, 0 }, gx[2] = { 0, 0 }, gy[2] = { 0, 0 };
+        double lap[2] = { 0, 0 }, adv[2] = { 0, 0 };
         for (int64_t e = e0 + 1; e < e1; e++) {
             int j = s->cand[e];
-            for (int q = 0; q < 2; q++) {
-                double du = s->u[3 * j + q] - s->u[3 * i + q];
-                lap[q] += s->lap[e] * du;
-                if (fixed) { /* grad u: the advection of fixed nodes */
-                    gx[q] += s->sfdi[e][0] * du;
-                    gy[q] += s->sfdi[e][1] * du;
-                }
-            }
+            for (int q = 0; q < 2; q++)
+                lap[q] += s->lap[e] * (s->u[3 * j + q] - s->u[3 * i + q]);
         }
+        if (fixed) /* the advection of fixed nodes */
+            advection(s, i, adv);
         for (int q = 0; q < 2; q++) {
-            double a = S->nu * lap[q] + S->g[q];
-            if (fixed)
-                a -= s->u[3 * i] * gx[q] + s->u[3 * i + 1] * gy[q];
+            double a = S->nu * lap[q] + S->g[q] - adv[q];
             s->ustar[3 * i + q] = s->u[3 * i + q] + dt * a;
         }
         s->ustar[3 * i + 2] = 0;
@@ -600,6 +629,19 @@ int mlpg_step(struct mlpg_solver *s, double dt)
         s->u[3 * i] = un * nn[0] - ut * nn[1];
         s->u[3 * i + 1] = un * nn[1] + ut * nn[0];
     }
+    /* secondOrder (doc M0-27): (dt^2/2) (u.grad) u^{n+1} of the fluid
+     * nodes, SFDI gradient, into ustar (free after the correction) */
+    if (trap) {
+#pragma omp parallel for schedule(static)
+        for (int i = 0; i < n; i++) {
+            if (s->type[i] == MLPG_WALL)
+                continue;
+            double adv[2];
+            advection(s, i, adv);
+            for (int q = 0; q < 2; q++)
+                s->ustar[3 * i + q] = 0.5 * dt * dt * adv[q];
+        }
+    }
     /* 5. Lagrangian nodes move; walls follow their motion (a sliding lid
      * stays: a conveyor) */
     if (!fixed)
@@ -607,7 +649,8 @@ int mlpg_step(struct mlpg_solver *s, double dt)
             int g = s->group ? s->group[i] : -1;
             if (s->type[i] != MLPG_WALL)
                 for (int q = 0; q < 2; q++)
-                    s->x[3 * i + q] += s->u[3 * i + q] * dt;
+                    s->x[3 * i + q] += s->u[3 * i + q] * dt
+                                     + (trap ? s->ustar[3 * i + q] : 0.0);
             else if (g >= 0 && wall_motion_moves(&s->groups[g].motion)) {
                 double d[3];
                 wall_motion_displacement(&s->groups[g].motion, tnew, d);

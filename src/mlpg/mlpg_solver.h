@@ -32,6 +32,7 @@ struct dict;
 
 enum mlpg_nodes { MLPG_NODES_FIXED, MLPG_NODES_LAGRANGIAN };
 enum mlpg_shift { MLPG_SHIFT_NONE, MLPG_SHIFT_LIND2012 };
+enum mlpg_move { MLPG_MOVE_END_VELOCITY, MLPG_MOVE_TRAPEZOIDAL };
 
 /* Wall nodes that move: a patch's nodes inside a box slide in place at a
  * velocity (a lid) or move rigidly with a motion model (a piston). */
@@ -65,6 +66,7 @@ struct mlpg_settings {
     double support, radius;    /* MLS support and R_I, in dl               */
     int shift;                 /* enum mlpg_shift (doc M0-25)              */
     double shift_coeff;        /* lind2012: A                              */
+    int move;                  /* enum mlpg_move (doc M0-27)               */
     double pref_point[3], pref_value;
 };
 

@@ -21,9 +21,11 @@
 #   wavemaker (the tutorial, the first 6 s): free surface at t = 6 s
 #     against the linear theory (validation/compare.sh, waves fitted over
 #     1-6 m, where they are developed): amplitude within 10 % (measured
-#     +2.5 %), wavelength within 5 % (-0.7 %), phase within T/10 = 0.138 s
-#     (0.005 s), RMS over 1-25 m < 2e-3 m; mean water level within 0.1 dl
-#     = 0.004 m of the displaced volume's (1e-4)
+#     +2.6 %), wavelength within 5 % (-0.7 %), phase within T/10 = 0.138 s
+#     (0.005 s), RMS over 1-25 m < 2e-3 m; mean water level within 6e-5 m
+#     of the displaced volume's (measured 2.6e-5 m with the case's
+#     positionUpdate secondOrder; eq. 4.9's endVelocity loses 1.13e-4 m
+#     by 6 s, doc M0-26, M0-27)
 #   cylinder (the tutorial: 24 surface nodes, inlet, outlet), Re 40, 1 s
 #     after the impulsive start: the recirculation behind it grows to
 #     L_wake/D = 0.93 (0.8-1.1; the run's number, a regression check)
@@ -152,7 +154,7 @@ if (cd "$c" && "$ROOT/bin/genParticles" > log.genParticles 2>&1 && "$ROOT/bin/ml
                          if ($k == "wavelength") { l = $(k + 1); lt = $(k + 4) }
                          if ($k == "phase") ph = $(k + 4); if ($k == "rms") rms = $(k + 1); if ($k == "m" && $(k + 1) == "at") lv = $(k - 1) } }
                    END { if (ph < 0) ph = -ph; e = a / at - 1; if (e < 0) e = -e; f = l / lt - 1; if (f < 0) f = -f
-                         exit !(at > 0 && lt > 0 && e < 0.1 && f < 0.05 && ph < 0.138 && rms < 2e-3 && lv != "" && lv < 0.004) }' \
+                         exit !(at > 0 && lt > 0 && e < 0.1 && f < 0.05 && ph < 0.138 && rms < 2e-3 && lv != "" && lv < 6e-5) }' \
         && pass mlpg_wavemaker || fail mlpg_wavemaker "$r"
 else
     fail mlpg_wavemaker "$(grep -A2 FATAL "$c/log.mlpgFluid" | head -3 | tr '\n' ' ')"
