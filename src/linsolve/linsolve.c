@@ -18,7 +18,8 @@
 #include "linsolve/linsolve_impl.h"
 
 const struct solver_ops *const linsolve_solvers[] = {
-    &solver_pcg, &solver_bicgstab, &solver_cholmod, &solver_hypre, NULL};
+    &solver_pcg, &solver_bicgstab, &solver_gmres, &solver_cholmod,
+    &solver_hypre, NULL};
 
 int linsolve_check_combination(const struct solver_ops *so,
                                const struct precond_ops *po)

@@ -5,17 +5,19 @@
  * solver, its preconditioner and its tolerances come from a dictionary (the
  * PPE sub-dictionary of system/mpsSolution) or from plain values.
  *
- *   solver          pcg | bicgstab | cholmod | hypre     (default pcg)
+ *   solver          pcg | bicgstab | gmres | cholmod | hypre     (default pcg)
  *   preconditioner  none | jacobi | ic0 | dic | ilu0 | amg (default jacobi)
  *   tolerance       relative, on ||b - A x||_2 / ||b||_2  (default 1e-8)
  *   maxIter         (default 1000)
  *   warmStart       yes | no                              (default yes)
  *
  * pcg takes none, jacobi, ic0, dic or amg (symmetric positive definite
- * matrix); bicgstab (non-symmetric PPE of the coupled case, porosity
- * weights) takes none, jacobi, ilu0 or amg (aggregation multigrid, one
- * W-cycle per application: iterations nearly independent of the
- * resolution, precond_amg.c); cholmod (direct; SPD only, small systems
+ * matrix); bicgstab and gmres (GMRES(20), one product and one
+ * preconditioner application per iteration where BiCGSTAB takes two:
+ * solver_gmres.c) are for the non-symmetric PPE of the coupled case,
+ * porosity weights, and take none, jacobi, ilu0 or amg (aggregation
+ * multigrid, one W-cycle per application: iterations nearly independent
+ * of the resolution, precond_amg.c); cholmod (direct; SPD only, small systems
  * and tests) and hypre (BoomerAMG-PCG, only in a `make HYPRE=1` build) read no
  * preconditioner. Other pairs are refused with a message.
  *
@@ -47,7 +49,7 @@ struct csr_matrix {           /* square, rows in any order of columns (not neces
 };
 struct linsolve_stats { int iters; double res_rel; double setup_s, solve_s; int converged; };
 struct linsolve;              /* opaque: a selected, configured solver with its work storage */
-/* Read `solver` (pcg | bicgstab | cholmod | hypre, default pcg), `preconditioner` (none | jacobi | ic0 | dic | ilu0 | amg, default jacobi),
+/* Read `solver` (pcg | bicgstab | gmres | cholmod | hypre, default pcg), `preconditioner` (none | jacobi | ic0 | dic | ilu0 | amg, default jacobi),
  * `tolerance` (relative on ||b - Ax||_2/||b||_2, default 1e-8), `maxIter` (default 1000), `warmStart` (yes) from d
  * (e.g. the PPE sub-dictionary of system/mpsSolution); logs "Selecting ...". */
 int  linsolve_create(const struct dict *d, struct linsolve **out);

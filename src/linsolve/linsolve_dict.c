@@ -4,7 +4,7 @@
  *
  *   PPE
  *   {
- *       solver          pcg;      // pcg | bicgstab | cholmod | hypre
+ *       solver          pcg;      // pcg | bicgstab | gmres | cholmod | hypre
  *       preconditioner  jacobi;   // none | jacobi | ic0 | dic | ilu0 | amg
  *       tolerance       1e-8;     // on ||b - A x||_2 / ||b||_2
  *       maxIter         1000;

@@ -113,7 +113,8 @@ struct solver_ops {
     void (*fini)(struct linsolve *s);
 };
 
-extern const struct solver_ops solver_pcg, solver_bicgstab, solver_cholmod,
+extern const struct solver_ops solver_pcg, solver_bicgstab, solver_gmres,
+    solver_cholmod,
     solver_hypre;
 extern const struct solver_ops *const linsolve_solvers[];
 

@@ -31,6 +31,8 @@ TMP="$(mktemp -d)"
 if [ -n "${KEEP:-}" ]; then echo "# cases in $TMP"; else trap 'rm -rf "$TMP"' EXIT; fi
 export OMP_NUM_THREADS=${THREADS:-2}
 PPE=${PPE:-neighbour}
+# SOLVER=NAME replaces the PPE solver of system/mpsSolution (e.g. gmres)
+SOLVER=${SOLVER:-}
 # FROM=DIR: steps from the FROM_TIME (default 0.1 s) state of finished
 # runs DIR/modelB-dp<dp> (e.g. a copy of the tutorial after
 # ./Allrun B 0.002 B 0.0027 B 0.003) instead of the release; FROM=auto
@@ -56,7 +58,7 @@ if [ "$FROM" = auto ]; then
     MPSDEM_DIR="$ROOT" "$FROM/Allrun" "${args[@]}" > "$FROM/log.Allrun" 2>&1 \
         || { echo "preparing the states failed: $(tail -3 "$FROM/log.Allrun" | tr '\n' ' ')"; exit 1; }
 fi
-echo "# $(date -u '+%F %T UTC'); $OMP_NUM_THREADS threads per program; load average $(cut -d' ' -f1-3 /proc/loadavg); PPE weights $PPE; r_e ${RE:-of the tutorial}; $steps steps${FROM:+ from $FROM_TIME s of $FROM}; fastest of $REPEAT"
+echo "# $(date -u '+%F %T UTC'); $OMP_NUM_THREADS threads per program; load average $(cut -d' ' -f1-3 /proc/loadavg); PPE weights $PPE${SOLVER:+, solver $SOLVER}; r_e ${RE:-of the tutorial}; $steps steps${FROM:+ from $FROM_TIME s of $FROM}; fastest of $REPEAT"
 declare -A paper_mps=([0.002]=4.40082 [0.0027]=1.83128 [0.003]=1.29677)
 declare -A paper_dem=([0.002]=3.36281 [0.0027]=3.25171 [0.003]=3.24867)
 printf "%-8s %9s %7s %7s | %12s %12s %10s | %9s %9s | %8s %8s\n" dp particles fluid grains \
@@ -89,6 +91,7 @@ for dp in "${dps[@]}"; do
         echo "porousLaplacian symmetric;" >> "$c/system/mpsSchemes"
         sed -i 's|^\(\s*solver\) .*|\1 pcg;|' "$c/system/mpsSolution"
     fi
+    [ -n "$SOLVER" ] && sed -i "s|^\(\s*solver\) .*|\1 $SOLVER;|" "$c/system/mpsSolution"
     [ -n "$FROM" ] || (cd "$c" && "$ROOT/bin/genParticles" > log.genParticles 2>&1) || { echo "dp $dp: genParticles failed"; continue; }
     np=$(awk '/^MPS particles:/ { print $3 }' "$c/log.genParticles")
     ng=$(awk '/^MPS particles:/ { print $NF }' "$c/log.genParticles")

@@ -163,7 +163,8 @@ static void run_case(const struct bcase *c, int reps, int cholmod,
     static const char *combos[][2] = {{"pcg", "jacobi"}, {"pcg", "dic"},
                                       {"pcg", "ic0"}, {"bicgstab", "jacobi"},
                                       {"pcg", "amg"}, {"bicgstab", "ilu0"},
-                                      {"bicgstab", "amg"}, {"hypre", "none"}};
+                                      {"bicgstab", "amg"}, {"gmres", "ilu0"},
+                                      {"gmres", "amg"}, {"hypre", "none"}};
     for (size_t k = 0; k < sizeof combos / sizeof combos[0]; k++)
         if (wanted(combos[k][0], combos[k][1]))
             run_solver(combos[k][0], combos[k][1], &A1, b1, &A2, b2, reps,

@@ -97,22 +97,24 @@ static void test_every_combination(void **state)
             free(x);
             linsolve_free(ls);
         }
-    /* pcg x {none jacobi ic0 dic amg}, bicgstab x {none jacobi ilu0 amg},
-     * cholmod and (make HYPRE=1) hypre ignore ours: accepted with all 6. */
+    /* pcg x {none jacobi ic0 dic amg}, bicgstab and gmres x {none jacobi
+     * ilu0 amg}, cholmod and (make HYPRE=1) hypre ignore ours: accepted
+     * with all 6. */
 #ifdef MPSDEM_HAVE_HYPRE
-    assert_int_equal(accepted, 5 + 4 + 6 + 6);
+    assert_int_equal(accepted, 5 + 4 + 4 + 6 + 6);
 #else
-    assert_int_equal(accepted, 5 + 4 + 6);
+    assert_int_equal(accepted, 5 + 4 + 4 + 6);
 #endif
-    /* pcg+ilu0, bicgstab+ic0, bicgstab+dic (+ hypre when not built). */
-    assert_true(refused >= 3);
+    /* pcg+ilu0, bicgstab and gmres + ic0 and dic (+ hypre when not
+     * built). */
+    assert_true(refused >= 5);
     int nsol = 0, npc = 0;
     while (linsolve_solvers[nsol])
         nsol++;
     while (linsolve_preconditioners[npc])
         npc++;
     assert_int_equal(accepted + refused, nsol * npc);
-    assert_true(nonsym >= 3); /* every bicgstab combination */
+    assert_true(nonsym >= 6); /* every bicgstab and gmres combination */
 }
 
 int main(void)

@@ -75,7 +75,7 @@ static void expect_error(const char *text, const char *line, const char *word)
 static void test_bad_entries(void **state)
 {
     (void)state;
-    expect_error("\nsolver gmres;\n", ":2", "bicgstab");
+    expect_error("\nsolver gmers;\n", ":2", "bicgstab gmres");
     expect_error("solver pcg;\n\n\npreconditioner ilu;\n", ":4", "ic0");
     expect_error("solver pcg;\npreconditioner ilu0;\n", ":2", "ilu0");
     expect_error("solver bicgstab;\npreconditioner ic0;\n", ":2", "ic0");
