@@ -17,10 +17,10 @@
  *
  * Why beside BiCGSTAB: an iteration costs one SpMV and one preconditioner
  * application, BiCGSTAB's two of each, and the residual falls
- * monotonically. With the aggregation AMG the PPE takes about as many
- * GMRES iterations as BiCGSTAB takes half-iterations' worth of products
- * (test/bench/ppeBench, doc/libraries.md §2), so the solve costs less while
- * the matrix stays the neighbour-weighted one of eq. (10).
+ * monotonically. With the aggregation AMG a 3-D porous PPE takes 14-17
+ * GMRES iterations where BiCGSTAB takes 8-11 (16-22 products; ppeBench,
+ * doc/libraries.md §2), so the solve costs less while the matrix stays
+ * the neighbour-weighted one of eq. (10).
  *
  * The basis is kept (V, (m+1) vectors of n), not the preconditioned one:
  * M^-1 is applied once more at the end of a cycle instead of storing m
