@@ -62,10 +62,10 @@ static const struct model_head *const shift_table[] = { &shift_none,
 
 static const struct model_head move_end = { "endVelocity",
     "Pan 2022 eq. 4.9: r += u^{n+1} dt" };
-static const struct model_head move_trap = { "secondOrder",
+static const struct model_head move_second = { "secondOrder",
     "r += u dt + (dt^2/2) (u.grad) u (doc/theory.md M0-27)" };
 static const struct model_head *const move_table[] = { &move_end,
-                                                       &move_trap, NULL };
+                                                       &move_second, NULL };
 
 static const struct model_head self_mls = { "approximant", "Pan 2022 eq. 4.23" };
 static const struct model_head self_nodal = { "nodal", "doc/theory.md M0-03" };
@@ -523,7 +523,7 @@ int mlpg_step(struct mlpg_solver *s, double dt)
 {
     const struct mlpg_settings *S = &s->S;
     const int fixed = S->nodes == MLPG_NODES_FIXED, n = s->n;
-    const int trap = !fixed && S->move == MLPG_MOVE_TRAPEZOIDAL;
+    const int second = !fixed && S->move == MLPG_MOVE_SECOND_ORDER;
     double t0 = app_wall_time(), tnew = s->time + dt;
     s->last_dt = dt;
     if (!fixed && s->t.steps > 0) /* Lagrangian: the nodes moved */
@@ -631,7 +631,7 @@ int mlpg_step(struct mlpg_solver *s, double dt)
     }
     /* secondOrder (doc M0-27): (dt^2/2) (u.grad) u^{n+1} of the fluid
      * nodes, SFDI gradient, into ustar (free after the correction) */
-    if (trap) {
+    if (second) {
 #pragma omp parallel for schedule(static)
         for (int i = 0; i < n; i++) {
             if (s->type[i] == MLPG_WALL)
@@ -650,7 +650,7 @@ int mlpg_step(struct mlpg_solver *s, double dt)
             if (s->type[i] != MLPG_WALL)
                 for (int q = 0; q < 2; q++)
                     s->x[3 * i + q] += s->u[3 * i + q] * dt
-                                     + (trap ? s->ustar[3 * i + q] : 0.0);
+                                     + (second ? s->ustar[3 * i + q] : 0.0);
             else if (g >= 0 && wall_motion_moves(&s->groups[g].motion)) {
                 double d[3];
                 wall_motion_displacement(&s->groups[g].motion, tnew, d);

@@ -32,7 +32,7 @@ struct dict;
 
 enum mlpg_nodes { MLPG_NODES_FIXED, MLPG_NODES_LAGRANGIAN };
 enum mlpg_shift { MLPG_SHIFT_NONE, MLPG_SHIFT_LIND2012 };
-enum mlpg_move { MLPG_MOVE_END_VELOCITY, MLPG_MOVE_TRAPEZOIDAL };
+enum mlpg_move { MLPG_MOVE_END_VELOCITY, MLPG_MOVE_SECOND_ORDER };
 
 /* Wall nodes that move: a patch's nodes inside a box slide in place at a
  * velocity (a lid) or move rigidly with a motion model (a piston). */
