@@ -25,7 +25,7 @@
  * The basis is kept (V, (m+1) vectors of n), not the preconditioned one:
  * M^-1 is applied once more at the end of a cycle instead of storing m
  * more vectors (memory per particle is a target, issue 21). GMRES_RESTART
- * m = 20: the warm-started PPE converges in 7-15 iterations, so a restart
+ * m = 20: the warm-started PPE converges in 13-17 iterations, so a restart
  * is rare; one cycle costs (m+1) n doubles.
  */
 #include <math.h>
