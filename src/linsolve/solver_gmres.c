@@ -37,7 +37,7 @@
 
 #define GMRES_RESTART 20
 
-enum { W_R, W_Z, W_U };
+enum { W_Z, W_U };
 
 struct gmres {
     int n_cap;
@@ -129,7 +129,7 @@ static void finish(struct linsolve *s, struct gmres *G, int n, int k,
         x[i] += s->work[W_Z][i];
 }
 
-/* One cycle of at most GMRES_RESTART steps from r = b - A x (in W_R,
+/* One cycle of at most GMRES_RESTART steps from r = b - A x (in v[0],
  * norm beta), ending early where the residual estimate meets tolabs. */
 static int cycle(struct linsolve *s, const struct csr_matrix *A, double *x,
                  double beta, double tolabs, int *iters)
@@ -137,7 +137,7 @@ static int cycle(struct linsolve *s, const struct csr_matrix *A, double *x,
     struct gmres *G = s->ext;
     const int n = A->n;
     double *const *v = G->v;
-    scale(n, 1.0 / beta, s->work[W_R], v[0]);
+    scale(n, 1.0 / beta, v[0], v[0]);
     G->g[0] = beta;
     int k = 0;
     while (k < GMRES_RESTART && *iters < s->maxiter) {
@@ -182,10 +182,11 @@ static int solve(struct linsolve *s, const struct csr_matrix *A,
                  const double *b, double *x, double tolabs,
                  struct linsolve_stats *st)
 {
-    TRY(reserve(s->ext, A->n));
+    struct gmres *G = s->ext;
+    TRY(reserve(G, A->n));
     int iters = 0;
     for (;;) {
-        double rnorm = sqrt(csr_residual(A, b, x, s->work[W_R]));
+        double rnorm = sqrt(csr_residual(A, b, x, G->v[0]));
         if (!isfinite(rnorm))
             return sim_error(SIM_ERR_NUMERIC, "GMRES: residual is not finite "
                              "after %d iterations", iters);

@@ -14,6 +14,7 @@
 #include "core/log.h"
 #include "coupling/models.h"
 #include "io/vtu.h"
+#include "particles/lattice.h"
 
 int solver_check_unused(struct solver *sv, const struct dict *d)
 {
@@ -347,18 +348,16 @@ int solver_wall_cloud_copy(const struct vtu_cloud *c, const char *path,
                             w->dummies);
 }
 
-int solver_read_patches_2d(struct solver *sv, struct dict **patches,
-                           double *dp, const char **names, int max, int *n)
+int solver_read_patches(struct solver *sv, int only_dim, struct dict **patches,
+                        int *dim, double *dp, const char **names, int max,
+                        int *n)
 {
-    long dim;
     TRY(app_read_dict(&sv->app, "constant/particlePatches", patches));
-    TRY(dict_get_label(*patches, "dimension", &dim));
-    if (dim != 2)
-        return dict_error(*patches, "dimension", SIM_ERR_DICT, "%s is 2-D: "
-                          "dimension must be 2", sv->ops->name);
-    TRY(dict_get_scalar(*patches, "dp", dp));
-    if (!(*dp > 0))
-        return dict_error(*patches, "dp", SIM_ERR_DICT, "dp must be > 0");
+    TRY(lattice_read_patches(*patches, dim, dp));
+    if (only_dim && *dim != only_dim)
+        return dict_error(*patches, "dimension", SIM_ERR_DICT, "%s is %d-D: "
+                          "dimension must be %d", sv->ops->name, only_dim,
+                          only_dim);
     dict_mark_used(*patches, "types");
     dict_mark_used(*patches, "wallLayers");
     return dict_get_words(*patches, "patches", max, names, n);

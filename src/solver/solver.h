@@ -140,11 +140,14 @@ int solver_main(const struct solver_ops *ops, struct solver *sv, int argc,
  * controlDict's), in the order of the calls. */
 int solver_check_unused(struct solver *sv, const struct dict *d);
 
-/* constant/particlePatches of a 2-D solver (genParticles): dimension 2
- * (else an error naming the program), the spacing dp > 0, the patch names
- * (at most max; they point into *patches, which the caller frees). */
-int solver_read_patches_2d(struct solver *sv, struct dict **patches,
-                           double *dp, const char **names, int max, int *n);
+/* constant/particlePatches (genParticles): the lattice's dimension and
+ * spacing (lattice_read_patches) into *dim and *dp, the patch names (at
+ * most max; they point into *patches, which the caller frees). only_dim
+ * 2: a 2-D solver, any other dimension is an error naming the program;
+ * 0: 2 or 3. */
+int solver_read_patches(struct solver *sv, int only_dim, struct dict **patches,
+                        int *dim, double *dp, const char **names, int max,
+                        int *n);
 
 /* The start cloud of a 2-D solver with one layer of wall particles on the
  * walls (mlpgFluid's nodes, isphSediment's particles; genParticles with

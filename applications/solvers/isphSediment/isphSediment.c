@@ -46,8 +46,9 @@ struct sediment {
 
 static int read_patches(struct sediment *f)
 {
-    return solver_read_patches_2d(&f->sv, &f->patches, &f->dp, f->patch_names,
-                                  ISPH_MAX_PATCHES, &f->npatches);
+    int dim;
+    return solver_read_patches(&f->sv, 2, &f->patches, &dim, &f->dp,
+                               f->patch_names, ISPH_MAX_PATCHES, &f->npatches);
 }
 
 /* alphaSediment { type linear; value a0; gradient (gx gy 0); origin (x0

@@ -44,8 +44,9 @@ struct fluid {
 
 static int read_patches(struct fluid *f)
 {
-    return solver_read_patches_2d(&f->sv, &f->patches, &f->dp, f->patch_names,
-                                  MLPG_MAX_PATCHES, &f->npatches);
+    int dim;
+    return solver_read_patches(&f->sv, 2, &f->patches, &dim, &f->dp,
+                               f->patch_names, MLPG_MAX_PATCHES, &f->npatches);
 }
 
 static int copy_cloud(struct fluid *f, const struct vtu_cloud *c,

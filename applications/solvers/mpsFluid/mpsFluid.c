@@ -38,7 +38,6 @@
 #include "io/vtu.h"
 #include "functionObjects/mps_functionObjects.h"
 #include "mps/mps.h"
-#include "particles/lattice.h"
 #include "mps/soil/soil.h"
 #include "solver/solver.h"
 
@@ -68,13 +67,8 @@ struct fluid {
 /* constant/particlePatches: patch names, dimension and dp of the lattice. */
 static int read_patches(struct fluid *f)
 {
-    TRY(app_read_dict(&f->sv.app, "constant/particlePatches", &f->patches));
-    TRY(dict_get_words(f->patches, "patches", MAX_PATCHES, f->patch_names,
-                       &f->npatches));
-    TRY(lattice_read_patches(f->patches, &f->dim, &f->dp));
-    dict_mark_used(f->patches, "types");
-    dict_mark_used(f->patches, "wallLayers");
-    return SIM_OK;
+    return solver_read_patches(&f->sv, 0, &f->patches, &f->dim, &f->dp,
+                               f->patch_names, MAX_PATCHES, &f->npatches);
 }
 
 /* The region of system/particleDict that made patch `name`: a list item
