@@ -120,6 +120,8 @@ struct channel {
     uint64_t beat_seen;         /* peer heartbeat value last seen ...      */
     uint64_t beat_seen_at;      /* ... since this local time [ns]          */
     uint64_t last_check;        /* time of our previous peer check [ns]    */
+    uint64_t peer_ticks;        /* its CPU time half a silence ago, ...    */
+    int peer_ticks_set;         /* ... once sampled                        */
     /* frame reserved by send_begin, waiting for commit */
     struct channel_frame *pending;
     /* frame exposed by recv, waiting for recv_done */
@@ -157,6 +159,10 @@ void chan_set_state(struct channel *c, int state);
 /* Start time of a process in clock ticks since boot, 0 when it does not
  * exist or is a zombie (exited, not yet reaped). */
 uint64_t chan_proc_start(pid_t pid);
+/* The scheduler state of process pid (field 3 of /proc/<pid>/stat: 'R'
+ * running or runnable, 'S' asleep, 'T' stopped, ...) and the CPU time of
+ * all its threads (utime + stime, clock ticks); 0 when it cannot be read. */
+int chan_proc_cpu(pid_t pid, char *state, uint64_t *ticks);
 /* Non-zero when side s was claimed by a program still running (and not
  * closed or failed). */
 int chan_side_alive(const struct chan_header *h, int s);

@@ -12,34 +12,60 @@
 #include <stdlib.h>
 #include <string.h>
 
-uint64_t chan_proc_start(pid_t pid)
+/* /proc/<pid>/stat into buf; the address of its field 3 (the state), or
+ * NULL. */
+static char *read_stat(pid_t pid, char *buf, size_t size)
 {
-    char path[64], buf[1024];
-    FILE *f;
-    size_t n;
-
+    char path[64];
     snprintf(path, sizeof path, "/proc/%d/stat", (int)pid);
-    f = fopen(path, "re");
+    FILE *f = fopen(path, "re");
     if (!f)
-        return 0;
-    n = fread(buf, 1, sizeof buf - 1, f);
+        return NULL;
+    size_t n = fread(buf, 1, size - 1, f);
     fclose(f);
     buf[n] = '\0';
     /* the command name (field 2) may hold spaces and ')' */
     char *p = strrchr(buf, ')');
     if (!p || p[1] != ' ')
-        return 0;
-    p += 2;
-    if (*p == 'Z' || *p == 'X' || *p == 'x')
-        return 0;
-    /* p is at field 3; the start time is field 22 */
-    for (int field = 3; field < 22; field++) {
+        return NULL;
+    return p + 2;
+}
+
+/* From field 3 at p on to field `field`, or NULL. */
+static char *skip_to(char *p, int field)
+{
+    for (int f = 3; f < field && p; f++) {
         p = strchr(p, ' ');
-        if (!p)
-            return 0;
-        p++;
+        if (p)
+            p++;
     }
-    return strtoull(p, NULL, 10);
+    return p;
+}
+
+uint64_t chan_proc_start(pid_t pid)
+{
+    char buf[1024];
+    char *p = read_stat(pid, buf, sizeof buf);
+    if (!p || *p == 'Z' || *p == 'X' || *p == 'x')
+        return 0;
+    p = skip_to(p, 22);   /* the start time */
+    return p ? strtoull(p, NULL, 10) : 0;
+}
+
+int chan_proc_cpu(pid_t pid, char *state, uint64_t *ticks)
+{
+    char buf[1024];
+    char *p = read_stat(pid, buf, sizeof buf);
+    if (!p)
+        return 0;
+    *state = *p;
+    p = skip_to(p, 14);   /* utime, then stime */
+    if (!p)
+        return 0;
+    char *end;
+    uint64_t u = strtoull(p, &end, 10);
+    *ticks = u + strtoull(end, NULL, 10);
+    return 1;
 }
 
 int chan_side_alive(const struct chan_header *h, int s)

@@ -120,7 +120,14 @@ static int peer_left(struct channel *c, int state)
 /* Silence is counted on our own clock while we keep checking: when our
  * checks were far apart (we computed, or the whole tandem was suspended
  * with Ctrl-Z and resumed), the count starts again, so that only a peer
- * that stays silent while we watch is declared hung. */
+ * that stays silent while we watch is declared hung.
+ *
+ * A silent peer that is runnable, or has used CPU time since half the
+ * silence, is starved, not stopped: a run at nice 19 on a busy machine
+ * went 2 s without being scheduled for its heartbeat (2026-11-28, two
+ * coupled runs beside a 2-thread benchmark on 2 cores) and was killed as
+ * hung. Its silence starts again; a stopped ('T') or frozen peer keeps
+ * neither state nor CPU time moving and is declared hung as before. */
 static int peer_silent(struct channel *c, uint64_t beat)
 {
     uint64_t now = chan_now_ns();
@@ -130,9 +137,26 @@ static int peer_silent(struct channel *c, uint64_t beat)
     if (beat != c->beat_seen || away) {
         c->beat_seen = beat;
         c->beat_seen_at = now;
+        c->peer_ticks_set = 0;
         return 0;
     }
-    return now - c->beat_seen_at > c->hung_ns;
+    uint64_t quiet = now - c->beat_seen_at;
+    if (quiet <= c->hung_ns / 2)
+        return 0;
+    char state;
+    uint64_t ticks;
+    if (chan_proc_cpu(c->peer_pid, &state, &ticks)) {
+        if (state == 'R' || (c->peer_ticks_set && ticks != c->peer_ticks)) {
+            c->beat_seen_at = now;   /* starved: count again */
+            c->peer_ticks_set = 0;
+            return 0;
+        }
+        if (!c->peer_ticks_set) {
+            c->peer_ticks = ticks;
+            c->peer_ticks_set = 1;
+        }
+    }
+    return quiet > c->hung_ns;
 }
 
 int chan_check_peer(struct channel *c)

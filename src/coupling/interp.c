@@ -78,21 +78,23 @@ void coupling_interp_grains(const struct coupling_pairs *P,
     }
 }
 
-void coupling_gradient_consistent(int n, const int64_t *start,
-                                  const int32_t *j, const double *w, int dim,
+void coupling_gradient_consistent(const struct neighbour_list *nl,
+                                  const struct pop_weights *W, int dim,
                                   double n0, const double *x, const double *p,
                                   const double *inv_eps, const uint8_t *rows,
                                   double *out)
 {
     const double c0 = dim / n0;
 #pragma omp parallel for schedule(static)
-    for (int i = 0; i < n; i++) {
+    for (int i = 0; i < nl->n; i++) {
         if (rows && !rows[i])
             continue;
         double g[3] = { 0, 0, 0 };
-        for (int64_t e = start[i]; e < start[i + 1]; e++) {
-            int32_t m = j[e];
-            if (m == i || w[e] == 0)
+        const int64_t e0 = nl->start[i], e1 = nl->start[i + 1];
+        const double *w = pop_weights_of(W, nl, i, e0, e1);
+        for (int64_t e = e0; e < e1; e++) {
+            int32_t m = nl->j[e];
+            if (m == i || w[e - e0] == 0)
                 continue;
             double r[3], r2 = 0;
             for (int c = 0; c < 3; c++) {
@@ -101,7 +103,7 @@ void coupling_gradient_consistent(int n, const int64_t *start,
             }
             if (!(r2 > 0))
                 continue;   /* coincident particles carry no direction */
-            double s = (p[m] - p[i]) * w[e] / r2;
+            double s = (p[m] - p[i]) * w[e - e0] / r2;
             if (inv_eps)
                 s *= inv_eps[m];
             for (int c = 0; c < 3; c++)

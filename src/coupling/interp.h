@@ -18,6 +18,8 @@
 
 #include <stdint.h>
 
+#include "particles/operators/weights.h"
+
 struct coupling_pairs;
 
 /*
@@ -52,13 +54,13 @@ void coupling_interp_grains(const struct coupling_pairs *P,
 
 /*
  * Consistent (zeroth-order exact) MPS gradient at particles, for A0-14,
- * on a CSR neighbour list given as plain arrays (the fields of
- * struct neighbour_list): row i is start[i]..start[i+1], neighbour j[e],
- * weight w[e] of the gradient radius. inv_eps may be NULL (eps = 1);
+ * over the whole rows of a neighbour list with the weights W of the
+ * gradient radius (stored or computed from the list's distances,
+ * particles/operators/weights.h). inv_eps may be NULL (eps = 1);
  * rows may be NULL (all). out is 3 per particle (z = 0 in 2-D).
  */
-void coupling_gradient_consistent(int n, const int64_t *start,
-                                  const int32_t *j, const double *w, int dim,
+void coupling_gradient_consistent(const struct neighbour_list *nl,
+                                  const struct pop_weights *W, int dim,
                                   double n0, const double *x, const double *p,
                                   const double *inv_eps, const uint8_t *rows,
                                   double *out);

@@ -286,8 +286,9 @@ int couple_fluid_grain_fields(struct couple_fluid *cf, struct mps_solver *s)
      * weights are one step old (positions moved by dt u), and before the
      * first step there is no list: then no gradient is sent. */
     if (cf->cs.model == COUPLING_MODEL_A && s->nl.start && s->nl.n == P->n
-        && s->w_g) {
-        coupling_gradient_consistent(P->n, s->nl.start, s->nl.j, s->w_g,
+        && s->wrow) {
+        const struct pop_weights Wg = mps_w(s, MPS_W_G);
+        coupling_gradient_consistent(&s->nl, &Wg,
                                      cf->dim, s->Lg.n0, P->x, P->p,
                                      P->inv_eps, cf->mask, cf->gradp_p);
         gp = cf->gradp_p;

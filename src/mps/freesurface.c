@@ -49,7 +49,8 @@ void mps_free_surface(struct mps_solver *s)
     const struct neighbour_list *nl = &in;
     const struct mps_settings *S = &s->S;
     const double n0 = s->Ln.n0, f0 = s->Ln.f0, c = P->dim / n0;
-    const double *w = s->w_n, *ie = P->inv_eps;
+    const struct pop_weights W = mps_w(s, MPS_W_N);
+    const double *ie = P->inv_eps;
 #pragma omp parallel for schedule(static)
     for (int i = 0; i < P->n; i++) {
         uint8_t flag = MPS_INNER;
@@ -62,16 +63,17 @@ void mps_free_surface(struct mps_solver *s)
                 flag = MPS_SURFACE;
             } else if (nd < S->fs_n_max) {
                 double F[3];
-                pop_surface_vector_row(nl, w, P->x, ie, i, F);
+                pop_surface_vector_row(nl, &W, P->x, ie, i, F);
                 double mag = c * sqrt(F[0] * F[0] + F[1] * F[1] + F[2] * F[2]);
                 if (mag > S->alpha * f0)
                     flag = MPS_SURFACE;
             }
         } else if (P->type[i] == MPS_WALL) {
             flag = MPS_DRY_WALL;
-            const int64_t k1 = neighbour_row_end(nl, i);
-            for (int64_t k = nl->start[i]; k < k1 && nd >= S->beta; k++)
-                if (w[k] > 0 && P->type[nl->j[k]] == MPS_FLUID) {
+            const int64_t k0 = nl->start[i], k1 = neighbour_row_end(nl, i);
+            const double *w = pop_weights_of(&W, nl, i, k0, k1);
+            for (int64_t k = k0; k < k1 && nd >= S->beta; k++)
+                if (w[k - k0] > 0 && P->type[nl->j[k]] == MPS_FLUID) {
                     flag = MPS_INNER;
                     break;
                 }

@@ -127,6 +127,9 @@ struct mps_settings {
     double skin;                    /* neighbour-list skin [dp]; the    */
                                     /* list is reused while no particle */
                                     /* moved more than skin/2           */
+    int measure_r;                  /* neighbourDistances measured: the */
+                                    /* list keeps positions, not        */
+                                    /* distances (neighbour.h)          */
     /* system/mpsSolution */
     double max_escape_fraction;     /* stop when more have escaped      */
     /* system/particleDict (set by the application): motion and removal
@@ -181,8 +184,14 @@ struct mps_solver {
     /* per-step work (capacity cap) */
     struct cell_grid grid;
     struct neighbour_list nl;
-    double *w_n, *w_g, *w_l;        /* weights aligned with nl           */
+    /* the weights of the three radii (mps_w): computed row by row where
+     * they are read, into wrow; stored, aligned with nl, only for the
+     * soil model, whose sums read them as arrays (mps_weights) */
+    double *w_n, *w_g, *w_l;        /* NULL unless stored                */
     size_t cap_w;
+    double *wrow;                   /* 3 x wrow_threads rows of cap_wrow */
+    int64_t cap_wrow;
+    int wrow_threads;
     double *ustar, *grad, *lap, *div;
     uint8_t *rows_fluid, *rows_ppe;
     uint8_t *rows_list;             /* rows the list builds (nl.rows)    */
@@ -214,6 +223,11 @@ int mps_solver_init(struct mps_solver *s, struct mps_particles *P,
                     const struct mps_settings *S, double dp,
                     struct linsolve *ls);
 void mps_solver_free(struct mps_solver *s);
+
+/* The weights of number density, gradient or Laplacian on s->nl (valid
+ * until the list changes). */
+enum mps_radius { MPS_W_N, MPS_W_G, MPS_W_L };
+struct pop_weights mps_w(const struct mps_solver *s, enum mps_radius which);
 
 /* The domain box that mps_solver_init puts around the particles must fit
  * the neighbour cells (cells_build's limits); otherwise SIM_ERR_INPUT

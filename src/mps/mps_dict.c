@@ -9,7 +9,8 @@
  *                                 porousLaplacian,
  *                                 sourceMix (gamma), freeSurface {...},
  *                                 collision, shifting (+ <name>Coeffs),
- *                                 dummyPressure, renumberInterval
+ *                                 dummyPressure, renumberInterval,
+ *                                 neighbourSkin, neighbourDistances
  *   system/mpsSolution            maxEscapeFraction (PPE {...} is read by
  *                                 linsolve_create)
  */
@@ -50,6 +51,13 @@ static const struct model_head dummy_extrapolated = {
 static const struct model_head *const dummy_table[] = {
     &dummy_wall, &dummy_zero, &dummy_extrapolated, NULL };
 
+static const struct model_head dist_stored = {
+    "stored", "8 bytes per pair, read where used" };
+static const struct model_head dist_measured = {
+    "measured", "from the list's positions where used: less memory" };
+static const struct model_head *const dist_table[] = {
+    &dist_stored, &dist_measured, NULL };
+
 static const struct model_head fs_zero = { "zero", "doc/theory.md A.4" };
 static const struct model_head fs_extrapolated = {
     "extrapolated", "Gibou et al. 2002 eq. 8, p = 0 dp/2 outside" };
@@ -66,6 +74,7 @@ const struct model_choice mps_choices[] = {
     { "system/mpsSchemes", "collision", TABLE(mps_collision_table) },
     { "system/mpsSchemes", "shifting", TABLE(mps_shifting_table) },
     { "system/mpsSchemes", "dummyPressure", TABLE(dummy_table) },
+    { "system/mpsSchemes", "neighbourDistances", TABLE(dist_table) },
     { "constant/soilProperties", "soilModel", TABLE(soil_model_table) },
     { "constant/soilProperties", "frictionWeight",
       TABLE(soil_friction_weight_table) },
@@ -191,6 +200,8 @@ static int read_schemes(const struct dict *d, struct mps_settings *S)
     if (!(S->skin >= 0 && S->skin <= 2))
         return dict_error(d, "neighbourSkin", SIM_ERR_DICT, "neighbourSkin "
                           "must lie in [0, 2] dp");
+    TRY(model_select_index(d, "neighbourDistances", "neighbour distances",
+                           TABLE(dist_table), "stored", &S->measure_r));
     return SIM_OK;
 }
 

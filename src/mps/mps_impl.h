@@ -19,7 +19,8 @@ int mps_neighbours(struct mps_solver *s);
  * and the particles hold phi. Uses lap and div as scratch. */
 void mps_volume_exchange(struct mps_solver *s, double dt);
 
-/* Kernel weights of every operator radius from nl.r (grown to nl.nnz). */
+/* After every change of the list: room for its rows in the computed
+ * weights (mps_w), or the stored weights of every radius (soil). */
 int mps_weights(struct mps_solver *s);
 
 /* Assemble and solve the PPE; fills P->p (0 at Dirichlet particles). */

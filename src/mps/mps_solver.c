@@ -2,6 +2,7 @@
  * operator radius, the box, work storage, wall/dummy partners) and the
  * neighbour phase of a step. */
 #include <math.h>
+#include <omp.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -180,6 +181,7 @@ int mps_solver_init(struct mps_solver *s, struct mps_particles *P,
      * model) then skip the outer pairs, 60-70 % of a row at 2.1 / 3.1 dp. */
     double r_in = dp * fmax(S->re_n, S->re_grad);
     s->nl.r_inner = r_in < s->re_max ? r_in : 0.0;
+    s->nl.measure_r = S->measure_r;
     /* With the predictor, pairs are re-measured at r* = r + dt u*: a skin
      * of half a spacing keeps pairs that come into range (a Courant
      * number below 0.25 moves two particles together by < 0.5 dp). */
@@ -219,15 +221,15 @@ int mps_solver_init(struct mps_solver *s, struct mps_particles *P,
     const double r_inner = s->nl.r_inner;
     neighbour_free(&s->nl);
     s->nl.r_inner = r_inner;
+    s->nl.measure_r = s->S.measure_r;
     /* From here on only particles that can see water within the list
      * radius get rows (list_rows); the list is built again on the same
      * grid, order unchanged. */
     s->setup_rows = 0;
     s->dummy_rows = s->S.dummy_pressure == MPS_DUMMY_P_EXTRAPOLATED;
     TRY(build_list(s));
-    TRY(mps_weights(s));
-    TRY(mps_soil_init(s));
-    return SIM_OK;
+    TRY(mps_soil_init(s));   /* before the weights: it stores them */
+    return mps_weights(s);
 }
 
 void mps_solver_free(struct mps_solver *s)
@@ -240,6 +242,7 @@ void mps_solver_free(struct mps_solver *s)
         free(s->w_g);
     if (s->w_l != s->w_n && s->w_l != s->w_g)
         free(s->w_l);
+    free(s->wrow);
     free(s->ustar); free(s->grad); free(s->lap); free(s->div);
     free(s->rows_fluid); free(s->rows_ppe); free(s->rows_list);
     free(s->cell_wet);
@@ -251,6 +254,7 @@ void mps_solver_free(struct mps_solver *s)
     memset(s, 0, sizeof *s);
 }
 
+/* Stored weights (the soil model): arrays of the list's size. */
 static int grow_weights(struct mps_solver *s)
 {
     size_t want = (size_t)s->nl.nnz + 1;
@@ -277,6 +281,57 @@ static int grow_weights(struct mps_solver *s)
     s->w_l = wl;
     s->cap_w = c;
     return SIM_OK;
+}
+
+/* Room for the longest row of the list, per radius and thread. */
+static int grow_rows(struct mps_solver *s)
+{
+    int nth = omp_get_max_threads();
+    int64_t want = s->nl.max_row + 1;
+    if (want <= s->cap_wrow && nth <= s->wrow_threads)
+        return SIM_OK;
+    int64_t c = want > s->cap_wrow ? want + want / 4 : s->cap_wrow;
+    int t = nth > s->wrow_threads ? nth : s->wrow_threads;
+    double *b = sim_realloc(s->wrow, 3 * (size_t)t * (size_t)c * sizeof *b);
+    if (!b)
+        return SIM_ERR_NOMEM;
+    s->wrow = b;
+    s->cap_wrow = c;
+    s->wrow_threads = t;
+    return SIM_OK;
+}
+
+static double radius(const struct mps_solver *s, enum mps_radius which)
+{
+    const struct mps_settings *S = &s->S;
+    return (which == MPS_W_N ? S->re_n : which == MPS_W_G ? S->re_grad
+                                                         : S->re_lap) * s->dp;
+}
+
+struct pop_weights mps_w(const struct mps_solver *s, enum mps_radius which)
+{
+    const double *w = which == MPS_W_N ? s->w_n
+                    : which == MPS_W_G ? s->w_g : s->w_l;
+    if (w)
+        return *POP_STORED(w);
+    return (struct pop_weights){
+        .fn = s->S.kernel->weights, .re = radius(s, which),
+        .buf = s->wrow + (size_t)which * s->wrow_threads * s->cap_wrow,
+        .cap = s->cap_wrow };
+}
+
+/* Stored weights of one radius from the list's distances. */
+static void store_weights(struct mps_solver *s, enum mps_radius which,
+                          double *w)
+{
+    const struct neighbour_list *nl = &s->nl;
+    const double re = radius(s, which);
+    pop_weights_fn *fn = s->S.kernel->weights;
+#pragma omp parallel for schedule(static)
+    for (int i = 0; i < nl->n; i++) {
+        const int64_t k0 = nl->start[i], k1 = nl->start[i + 1];
+        fn(neighbour_row_r(nl, i, k0, k1), k1 - k0, re, w + k0);
+    }
 }
 
 /* The list (radius re_max + skin) still holds every pair within re_max
@@ -380,23 +435,6 @@ static int build_list(struct mps_solver *s)
     return SIM_OK;
 }
 
-/* The weights a step reads at r^m. With the predictor (and neither soil
- * nor the volume exchange, which read w_n there) that is the Laplacian's
- * alone, for the viscous term: the number density and the gradient are
- * first read at r*, where predict_positions computes every weight again.
- * One kernel pass over the pairs less per step; w_n and w_g are stale
- * (the last r*'s, on another list) until then. */
-static int step_weights(struct mps_solver *s)
-{
-    const struct mps_settings *S = &s->S;
-    if (!S->predictor || s->soil || S->phi_relax_time > 0
-        || s->w_l == s->w_n || s->w_l == s->w_g)
-        return mps_weights(s);
-    TRY(grow_weights(s));
-    S->kernel->weights(s->nl.r, s->nl.nnz, S->re_lap * s->dp, s->w_l);
-    return SIM_OK;
-}
-
 int mps_neighbours(struct mps_solver *s)
 {
     struct mps_particles *P = &s->P;
@@ -410,7 +448,7 @@ int mps_neighbours(struct mps_solver *s)
     const double cell_h = s->r_list;
     if (list_still_valid(s)) {
         TRY(neighbour_update(&s->nl, P->x));   /* pairs within re_max only */
-        return step_weights(s);
+        return mps_weights(s);
     }
     s->n_builds++;
     s->t.builds++;
@@ -442,18 +480,19 @@ int mps_neighbours(struct mps_solver *s)
                         s->box_hi));
     }
     TRY(build_list(s));
-    return s->setup_rows ? SIM_OK : step_weights(s);
+    return s->setup_rows ? SIM_OK : mps_weights(s);
 }
 
 int mps_weights(struct mps_solver *s)
 {
-    const struct mps_settings *S = &s->S;
-    const double dp = s->dp;
+    TRY(grow_rows(s));
+    if (!s->soil)
+        return SIM_OK;
     TRY(grow_weights(s));
-    S->kernel->weights(s->nl.r, s->nl.nnz, S->re_n * dp, s->w_n);
+    store_weights(s, MPS_W_N, s->w_n);
     if (s->w_g != s->w_n)
-        S->kernel->weights(s->nl.r, s->nl.nnz, S->re_grad * dp, s->w_g);
+        store_weights(s, MPS_W_G, s->w_g);
     if (s->w_l != s->w_n && s->w_l != s->w_g)
-        S->kernel->weights(s->nl.r, s->nl.nnz, S->re_lap * dp, s->w_l);
+        store_weights(s, MPS_W_L, s->w_l);
     return SIM_OK;
 }

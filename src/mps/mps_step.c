@@ -41,7 +41,8 @@ static void predict(struct mps_solver *s, double dt)
     const struct mps_settings *S = &s->S;
     for (int i = 0; i < P->n; i++)
         s->rows_fluid[i] = P->type[i] == MPS_FLUID;
-    mps_laplacian(&s->nl, s->w_l, P->dim, s->Ll.n0, s->Ll.lambda, 3, P->u,
+    const struct pop_weights Wl = mps_w(s, MPS_W_L);
+    mps_laplacian(&s->nl, &Wl, P->dim, s->Ll.n0, s->Ll.lambda, 3, P->u,
                   P->inv_eps, s->rows_fluid, s->lap);
     const double *fe = P->f_ext;
     const double *sa = s->soil ? s->soil->acc : NULL;
@@ -86,7 +87,8 @@ static void density(struct mps_solver *s)
 {
     struct mps_particles *P = &s->P;
     const struct neighbour_list in = neighbour_inner(&s->nl);
-    mps_number_density(&in, s->w_n, P->inv_eps, NULL, P->nd);
+    const struct pop_weights Wn = mps_w(s, MPS_W_N);
+    mps_number_density(&in, &Wn, P->inv_eps, NULL, P->nd);
     const double inv_n0 = 1.0 / s->Ln.n0;
 #pragma omp parallel for schedule(static)
     for (int i = 0; i < P->n; i++)
@@ -99,14 +101,15 @@ static void pressure_gradient(struct mps_solver *s)
 {
     struct mps_particles *P = &s->P;
     const struct neighbour_list in = neighbour_inner(&s->nl);
+    const struct pop_weights Wg = mps_w(s, MPS_W_G);
     if (s->S.gradient == MPS_GRAD_CORRECTED)
-        mps_gradient_corrected(&in, s->w_g, P->dim, s->Lg.n0, P->x, P->p,
+        mps_gradient_corrected(&in, &Wg, P->dim, s->Lg.n0, P->x, P->p,
                                P->inv_eps, s->rows_fluid, s->grad);
     else if (s->S.gradient == MPS_GRAD_PMIN)
-        mps_gradient_pmin(&in, s->w_g, P->dim, s->Lg.n0, P->x, P->p,
+        mps_gradient_pmin(&in, &Wg, P->dim, s->Lg.n0, P->x, P->p,
                           P->inv_eps, s->rows_fluid, s->grad);
     else
-        mps_gradient(&in, s->w_g, P->dim, s->Lg.n0, P->x, P->p,
+        mps_gradient(&in, &Wg, P->dim, s->Lg.n0, P->x, P->p,
                      P->inv_eps, s->rows_fluid, s->grad);
 }
 

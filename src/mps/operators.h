@@ -32,41 +32,45 @@ int mps_lattice_constants(const struct mps_kernel_ops *k, int dim, double dp,
                           double re, struct pop_lattice *out);
 
 /* n_i = sum_j w_ij / eps_j  (eq. 7). */
-void mps_number_density(const struct neighbour_list *nl, const double *w,
-                        const double *inv_eps, const uint8_t *rows,
-                        double *n);
+void mps_number_density(const struct neighbour_list *nl,
+                        const struct pop_weights *W, const double *inv_eps,
+                        const uint8_t *rows, double *n);
 
 /* eq. (8), (d/n0) sum_j (phi_j + phi_i) ...; 3 values per particle. */
-void mps_gradient(const struct neighbour_list *nl, const double *w, int dim,
-                  double n0, const double *x, const double *phi,
+void mps_gradient(const struct neighbour_list *nl, const struct pop_weights *W,
+                  int dim, double n0, const double *x, const double *phi,
                   const double *inv_eps, const uint8_t *rows, double *out);
 
 /* Koshizuka and Oka (1996) eq. (11), the p_min form. */
-void mps_gradient_pmin(const struct neighbour_list *nl, const double *w,
-                       int dim, double n0, const double *x, const double *phi,
+void mps_gradient_pmin(const struct neighbour_list *nl,
+                       const struct pop_weights *W, int dim, double n0,
+                       const double *x, const double *phi,
                        const double *inv_eps, const uint8_t *rows,
                        double *out);
 
 /* Corrective matrix (Khayyer and Gotoh 2011; gradient_corrected.h). */
-void mps_gradient_corrected(const struct neighbour_list *nl, const double *w,
-                            int dim, double n0, const double *x,
-                            const double *phi, const double *inv_eps,
-                            const uint8_t *rows, double *out);
+void mps_gradient_corrected(const struct neighbour_list *nl,
+                            const struct pop_weights *W, int dim, double n0,
+                            const double *x, const double *phi,
+                            const double *inv_eps, const uint8_t *rows,
+                            double *out);
 
 /* eq. (9). */
-void mps_divergence(const struct neighbour_list *nl, const double *w, int dim,
-                    double n0, const double *x, const double *u,
-                    const double *inv_eps, const uint8_t *rows, double *out);
+void mps_divergence(const struct neighbour_list *nl,
+                    const struct pop_weights *W, int dim, double n0,
+                    const double *x, const double *u, const double *inv_eps,
+                    const uint8_t *rows, double *out);
 
 /* eq. (10), ncomp interleaved components (1 pressure, 3 velocity). */
-void mps_laplacian(const struct neighbour_list *nl, const double *w, int dim,
-                   double n0, double lambda, int ncomp, const double *phi,
+void mps_laplacian(const struct neighbour_list *nl,
+                   const struct pop_weights *W, int dim, double n0,
+                   double lambda, int ncomp, const double *phi,
                    const double *inv_eps, const uint8_t *rows, double *out);
 
 /* eq. (15), 3 per particle. */
-void mps_surface_vector(const struct neighbour_list *nl, const double *w,
-                        int dim, double n0, const double *x,
-                        const double *inv_eps, const uint8_t *rows,
-                        double *out);
+void mps_surface_vector(const struct neighbour_list *nl,
+                        const struct pop_weights *W, int dim, double n0,
+                        const double *x, const double *inv_eps,
+                        const uint8_t *rows, double *out);
 
 #endif

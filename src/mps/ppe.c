@@ -76,14 +76,15 @@ static int assemble(struct mps_solver *s, int m)
 {
     const struct mps_particles *P = &s->P;
     const struct neighbour_list *nl = &s->nl;
-    const double *w = s->w_l, *ie = P->inv_eps;
+    const struct pop_weights W = mps_w(s, MPS_W_L);
+    const double *ie = P->inv_eps;
     const double *rr = s->soil ? s->soil->ratio : NULL; /* rho_0/rho */
     const double c = 2.0 * P->dim / (s->Ll.n0 * s->Ll.lambda);
     const int sym = s->S.porous_symmetric;
     int64_t *rp = s->A.rowptr;
     /* pass 1: row lengths (diagonal + unknown neighbours); dummies are
      * never unknowns, so the pattern needs no type test */
-    pop_matrix_rowptr(nl, P->n, w, s->unk, m, rp);
+    pop_matrix_rowptr(nl, P->n, &W, s->unk, m, rp);
     TRY(csr_reserve(&s->A, &s->cap_nnz, rp[m]));
     s->A.n = m;
     s->A.nnz = rp[m];
@@ -95,13 +96,15 @@ static int assemble(struct mps_solver *s, int m)
             continue;
         int64_t pos = rp[r] + 1;
         double diag = 0, bd = 0;
-        for (int64_t k = nl->start[i]; k < nl->start[i + 1]; k++) {
+        const int64_t k0 = nl->start[i], k1 = nl->start[i + 1];
+        const double *w = pop_weights_of(&W, nl, i, k0, k1);
+        for (int64_t k = k0; k < k1; k++) {
             int j = nl->j[k];
-            if (w[k] == 0 || P->type[j] == MPS_DUMMY)
+            if (w[k - k0] == 0 || P->type[j] == MPS_DUMMY)
                 continue;
             /* inv_eps holds phi/eps: the pair weight 2/(eps_i + eps_j) in
              * those terms is the harmonic mean of the two values */
-            double a = c * w[k] * (!ie ? 1.0
+            double a = c * w[k - k0] * (!ie ? 1.0
                                    : sym ? 2.0 * ie[i] * ie[j] / (ie[i] + ie[j])
                                          : ie[j]);
             if (rr) /* multi-density: harmonic mean of rho_0/rho */
@@ -139,7 +142,8 @@ static void source(struct mps_solver *s, double dt)
                 su[3 * i + q] = sc[i] * s->ustar[3 * i + q];
         u = su;
     }
-    mps_divergence(&in, s->w_g, P->dim, s->Lg.n0, P->x, u, P->inv_eps,
+    const struct pop_weights Wg = mps_w(s, MPS_W_G);
+    mps_divergence(&in, &Wg, P->dim, s->Lg.n0, P->x, u, P->inv_eps,
                    s->rows_ppe, s->div);
 #pragma omp parallel for schedule(static)
     for (int i = 0; i < P->n; i++) {

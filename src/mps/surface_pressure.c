@@ -33,27 +33,33 @@
 #include "mps/mps_impl.h"
 #include "particles/operators/gradient_corrected.h"
 
-static double surface_value(const struct mps_solver *s, int i)
+static double surface_value(const struct mps_solver *s,
+                            const struct pop_weights *Wn,
+                            const struct pop_weights *Wg, int i)
 {
     const struct mps_particles *P = &s->P;
     const struct neighbour_list *nl = &s->nl;
     const double *ie = P->inv_eps, *xi = P->x + 3 * i;
     double m[9] = { 0 }, v[3] = { 0 }, S[3] = { 0 }, F[3] = { 0 };
     double pmax = 0;
-    for (int64_t k = nl->start[i]; k < nl->start[i + 1]; k++) {
+    const int64_t k0 = nl->start[i], k1 = nl->start[i + 1];
+    const double *rr = neighbour_row_r(nl, i, k0, k1);
+    const double *wn = pop_weights_row(Wn, k0, rr, k1 - k0);
+    const double *wg = pop_weights_row(Wg, k0, rr, k1 - k0);
+    for (int64_t k = k0; k < k1; k++) {
         int j = nl->j[k];
-        double r = nl->r[k];
+        double r = rr[k - k0];
         if (r == 0)
             continue;
         double d[3] = { P->x[3 * j] - xi[0], P->x[3 * j + 1] - xi[1],
                         P->x[3 * j + 2] - xi[2] };
         double e = ie ? ie[j] : 1.0;
-        if (s->w_n[k] > 0)
+        if (wn[k - k0] > 0)
             for (int q = 0; q < 3; q++)
-                F[q] += s->w_n[k] * e * d[q] / r;
-        if (s->w_g[k] == 0)
+                F[q] += wn[k - k0] * e * d[q] / r;
+        if (wg[k - k0] == 0)
             continue;
-        double a = s->w_g[k] * e / (r * r);
+        double a = wg[k - k0] * e / (r * r);
         if (P->type[j] == MPS_FLUID && P->fs[j] != MPS_SURFACE)
             pmax = fmax(pmax, P->p[j]);
         for (int q = 0; q < 3; q++) {
@@ -80,8 +86,9 @@ static double surface_value(const struct mps_solver *s, int i)
 void mps_surface_pressure(struct mps_solver *s)
 {
     struct mps_particles *P = &s->P;
+    const struct pop_weights Wn = mps_w(s, MPS_W_N), Wg = mps_w(s, MPS_W_G);
 #pragma omp parallel for schedule(static)
     for (int i = 0; i < P->n; i++)
         if (P->type[i] == MPS_FLUID && P->fs[i] == MPS_SURFACE)
-            P->p[i] = surface_value(s, i);
+            P->p[i] = surface_value(s, &Wn, &Wg, i);
 }

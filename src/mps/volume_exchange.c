@@ -44,7 +44,8 @@ void mps_volume_exchange(struct mps_solver *s, double dt)
     const double c = fmin(dt / tau, 0.25) / s->Ln.n0;
     const struct neighbour_list in = neighbour_inner(&s->nl);
     const struct neighbour_list *nl = &in;
-    const double *w = s->w_n, *a = P->inv_eps, *phi = P->phi, *u = P->u;
+    const struct pop_weights W = mps_w(s, MPS_W_N);
+    const double *a = P->inv_eps, *phi = P->phi, *u = P->u;
     /* The step has not used lap and div yet: new phi in div, new u in lap. */
     double *phi_new = s->div, *u_new = s->lap;
 #pragma omp parallel for schedule(static)
@@ -53,12 +54,14 @@ void mps_volume_exchange(struct mps_solver *s, double dt)
             continue;
         const double eps_i = phi[i] / a[i];
         double dphi = 0, mom[3] = { 0, 0, 0 };
-        const int64_t k1 = neighbour_row_end(nl, i);
-        for (int64_t k = nl->start[i]; k < k1; k++) {
+        const int64_t k0 = nl->start[i], k1 = neighbour_row_end(nl, i);
+        const double *w = pop_weights_of(&W, nl, i, k0, k1);
+        for (int64_t k = k0; k < k1; k++) {
             int j = nl->j[k];
-            if (w[k] == 0 || P->type[j] != MPS_FLUID)
+            if (w[k - k0] == 0 || P->type[j] != MPS_FLUID)
                 continue;
-            double f = c * w[k] * fmin(eps_i, phi[j] / a[j]) * (a[j] - a[i]);
+            double f = c * w[k - k0] * fmin(eps_i, phi[j] / a[j])
+                     * (a[j] - a[i]);
             const double *uf = u + 3 * (f > 0 ? j : i);
             dphi += f;
             for (int q = 0; q < 3; q++)

@@ -85,10 +85,11 @@ int mps_find_partners(struct mps_solver *s)
 }
 
 /* Adami et al. (2012) eq. (27) on the gradient radius. */
-static int extrapolate(const struct mps_solver *s, int i, double *p)
+static int extrapolate(const struct mps_solver *s,
+                       const struct pop_weights *Wg, int i, double *p)
 {
     const struct mps_particles *P = &s->P;
-    return pop_wall_extrapolate(&s->nl, s->w_g, P->x, P->p, P->type,
+    return pop_wall_extrapolate(&s->nl, Wg, P->x, P->p, P->type,
                                 MPS_FLUID, s->S.rho, s->S.g, i, p);
 }
 
@@ -97,11 +98,12 @@ void mps_dummy_pressure(struct mps_solver *s)
     struct mps_particles *P = &s->P;
     const int mode = s->S.dummy_pressure;
     const double rho = s->S.rho, *g = s->S.g;
+    const struct pop_weights Wg = mps_w(s, MPS_W_G);
     if (mode == MPS_DUMMY_P_EXTRAPOLATED) {
         /* wall particles first: deep dummies fall back on their partner */
 #pragma omp parallel for schedule(static)
         for (int i = 0; i < P->n; i++)
-            if (P->type[i] == MPS_WALL && !extrapolate(s, i, &P->p[i]))
+            if (P->type[i] == MPS_WALL && !extrapolate(s, &Wg, i, &P->p[i]))
                 P->p[i] = 0;
     }
 #pragma omp parallel for schedule(static)
@@ -109,7 +111,8 @@ void mps_dummy_pressure(struct mps_solver *s)
         if (P->type[i] != MPS_DUMMY)
             continue;
         int w = P->partner[i];
-        if (mode == MPS_DUMMY_P_EXTRAPOLATED && extrapolate(s, i, &P->p[i]))
+        if (mode == MPS_DUMMY_P_EXTRAPOLATED
+            && extrapolate(s, &Wg, i, &P->p[i]))
             continue;
         if (mode == MPS_DUMMY_P_ZERO || w < 0) {
             P->p[i] = 0;

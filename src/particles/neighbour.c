@@ -11,12 +11,12 @@
  * cell-traversal order (z, then y, then x), so that on the same grid the
  * rows, and every sum over them, are those of a full 27-cell scan.
  *
- * Update: one pass over each thread's block of candidates keeps the
- * indices of those within the cut-off in a scratch laid out like the
- * candidates; once the blocks' counts are known, a second pass writes them
- * into place with their distances (recomputed: cheaper than storing them
- * for every candidate). The update goes by the build's blocks, so any
- * thread count reads the candidates where the build left them. */
+ * Update: one pass over each thread's block of candidates counts those
+ * within the cut-off; once the blocks' counts are known, a second pass
+ * measures them again and writes them into place with their distances
+ * (cheaper than storing a distance, or a copy of the kept indices, for
+ * every candidate). The update goes by the build's blocks, so any thread
+ * count reads the candidates where the build left them. */
 #include "particles/neighbour.h"
 
 #include <math.h>
@@ -27,6 +27,10 @@
 #include "core/error.h"
 #include "particles/cells.h"
 
+
+/* Entries between two blocks' slots for the candidates beyond rc: two
+ * cache lines of distances. */
+#define TRASH 16
 
 static int reserve_rows(struct neighbour_list *nl, int n)
 {
@@ -52,24 +56,47 @@ static int reserve_rows(struct neighbour_list *nl, int n)
 
 static int reserve_entries(struct neighbour_list *nl, int64_t nnz)
 {
-    if ((size_t)nnz <= nl->cap_nnz)
+    const int want_r = !nl->measure_r;
+    if ((size_t)nnz <= nl->cap_nnz && (!want_r || nl->r))
         return SIM_OK;
     /* sized to the pairs within rc (about 2/3 of the candidates at a
      * skin of 0.5 dp in 3-D), with room for the growth between builds */
     size_t c = (size_t)nnz + (size_t)nnz / 8 + 64;
+    c = c > nl->cap_nnz ? c : nl->cap_nnz;
     SIM_GROW(nl->j, c);
-    SIM_GROW(nl->r, c);
+    if (want_r)
+        SIM_GROW(nl->r, c);
     nl->cap_nnz = c;
     return SIM_OK;
 }
 
-static int reserve_scratch(struct neighbour_list *nl, int64_t nnz)
+/* measure_r: the positions of this update and room for the longest row
+ * per thread. */
+static int keep_positions(struct neighbour_list *nl, const double *x)
 {
-    if ((size_t)nnz <= nl->cap_cand)
+    if (!nl->measure_r)
         return SIM_OK;
-    size_t c = (size_t)nnz + (size_t)nnz / 8 + 64;
-    SIM_GROW(nl->sj, c);
-    nl->cap_cand = c;
+    free(nl->r);          /* a list that stored distances before */
+    nl->r = NULL;
+    const size_t n3 = 3 * (size_t)nl->n;
+    if (n3 > nl->cap_xr) {
+        size_t c = n3 + n3 / 8 + 3;
+        SIM_GROW(nl->xr, c);
+        nl->cap_xr = c;
+    }
+    memcpy(nl->xr, x, n3 * sizeof *x);
+    int nth = omp_get_max_threads();
+    if (nl->max_row + 1 > nl->cap_rbuf || nth > nl->rbuf_threads) {
+        int64_t want = nl->max_row + 1;
+        int64_t c = want > nl->cap_rbuf ? want + want / 4 : nl->cap_rbuf;
+        int t = nth > nl->rbuf_threads ? nth : nl->rbuf_threads;
+        double *b = sim_realloc(nl->rbuf, (size_t)t * (size_t)c * sizeof *b);
+        if (!b)
+            return SIM_ERR_NOMEM;
+        nl->rbuf = b;
+        nl->cap_rbuf = c;
+        nl->rbuf_threads = t;
+    }
     return SIM_OK;
 }
 
@@ -102,11 +129,7 @@ static int reserve_buffers(struct neighbour_list *nl, int nth)
     return SIM_OK;
 }
 
-static double dist2(const double *a, const double *b)
-{
-    return (b[0] - a[0]) * (b[0] - a[0]) + (b[1] - a[1]) * (b[1] - a[1])
-         + (b[2] - a[2]) * (b[2] - a[2]);
-}
+#define dist2 neighbour_dist2
 
 /* Candidates of particle i into out (room for every particle of the runs
  * is guaranteed by the caller); returns how many. */
@@ -186,8 +209,6 @@ static int build_candidates(struct neighbour_list *nl,
             nl->nnz_cand = acc;
             nl->nblk = nt;
             nl->blk_row[nt] = n;
-            if (!err)
-                err = reserve_scratch(nl, acc);
         }
     }
     return err;
@@ -214,106 +235,123 @@ int neighbour_build(struct neighbour_list *nl, const struct cell_grid *g,
     return neighbour_build_skin(nl, g, x, rc, 0.0);
 }
 
-/* Candidates of rows [a, b) within rc2: their indices into the scratch
- * at the candidate offsets, counts into start[i]. Branch-free (about half
- * the candidates are kept, in no predictable pattern); the store one past
- * a full row lands in the next row's first slot, rewritten afterwards,
- * except past the block's last row, which another thread owns: that row
- * takes the branch. */
-static int64_t select_block(struct neighbour_list *nl, const double *x,
-                            double rc2, int t)
+/* Pairs of rows [a, b) (block t) within rc2: counts into start[i], the
+ * longest into *longest. */
+static int64_t count_block(struct neighbour_list *nl, const double *x,
+                           double rc2, int t, int64_t *longest)
 {
     const int a = nl->blk_row[t], b = nl->blk_row[t + 1];
     const int32_t *cj = nl->buf[t];   /* from candidate cstart[a] on */
     const int64_t base = nl->cstart[a];
-    int64_t tot = 0;
+    int64_t tot = 0, big = 0;
     for (int i = a; i < b; i++) {
         const double *xi = x + 3 * i;
-        int64_t k0 = nl->cstart[i], k1 = nl->cstart[i + 1], pos = k0;
-        if (i < b - 1) {
-            for (int64_t k = k0; k < k1; k++) {
-                int j = cj[k - base];
-                nl->sj[pos] = j;
-                pos += dist2(xi, x + 3 * j) < rc2;
-            }
-        } else {
-            for (int64_t k = k0; k < k1; k++) {
-                int j = cj[k - base];
-                if (dist2(xi, x + 3 * j) < rc2)
-                    nl->sj[pos++] = j;
-            }
-        }
-        nl->start[i] = pos - k0;
-        tot += pos - k0;
+        int64_t len = 0;
+        for (int64_t k = nl->cstart[i]; k < nl->cstart[i + 1]; k++)
+            len += dist2(xi, x + 3 * cj[k - base]) < rc2;
+        nl->start[i] = len;
+        tot += len;
+        big = len > big ? len : big;
     }
+    *longest = big;
     return tot;
+}
+
+/* Rows of block t into place from entry off: the pairs within r_inner
+ * from the front, the others from the back, in candidate order. Without a
+ * branch (neither test follows a pattern): a candidate beyond rc goes to
+ * the block's own slot past the entries, overwritten by the next one; the
+ * blocks' slots TRASH entries apart, so that no two threads write one
+ * cache line (that sharing made the update twice as slow). */
+static void write_block(struct neighbour_list *nl, const double *x,
+                        double rc2, double ri2, int t, int64_t off)
+{
+    const int a = nl->blk_row[t], b = nl->blk_row[t + 1];
+    const int32_t *cj = nl->buf[t];
+    const int64_t base = nl->cstart[a];
+    const int64_t trash = (int64_t)nl->cap_nnz - TRASH * (t + 1);
+    double *r = nl->r;
+    for (int i = a; i < b; i++) {
+        int64_t len = nl->start[i];
+        nl->start[i] = off;
+        const double *xi = x + 3 * i;
+        int64_t front = off, back = off + len - 1;
+        for (int64_t k = nl->cstart[i]; k < nl->cstart[i + 1]; k++) {
+            int j = cj[k - base];
+            double d2 = dist2(xi, x + 3 * j);
+            int keep = d2 < rc2, in = d2 < ri2;
+            int64_t pos = !keep ? trash : in ? front : back;
+            front += keep & in;
+            back -= keep & !in;
+            nl->j[pos] = j;
+            if (r)
+                r[pos] = d2;
+        }
+        /* the square roots of the kept pairs only, vectorised */
+        if (r)
+#pragma omp simd
+            for (int64_t k = off; k < off + len; k++)
+                r[k] = sqrt(r[k]);
+        nl->mid[i] = front;
+        off += len;
+    }
 }
 
 int neighbour_update(struct neighbour_list *nl, const double *x)
 {
     const int n = nl->n, nb = nl->nblk;
     const double rc2 = nl->rc * nl->rc;
+    /* with no split every pair is "inner" */
     const double ri2 = nl->r_inner > 0 ? nl->r_inner * nl->r_inner : rc2;
     int64_t *cnt = nl->blk;
     if (nb < 1)
         return SIM_OK;   /* brute-force list: no candidates */
     int err = SIM_OK;
+    int64_t longest = 0;
     /* by the build's blocks, whose candidates are in their buffers: one
-     * block per thread when the thread count is the build's */
+     * block per thread when the thread count is the build's; two passes
+     * over the candidates (count, write) instead of a copy of the kept
+     * ones: a scratch as large as the candidates set the peak memory */
 #pragma omp parallel
     {
-#pragma omp for schedule(static)
-        for (int t = 0; t < nb; t++)
-            cnt[t] = select_block(nl, x, rc2, t);
+#pragma omp for schedule(static) reduction(max : longest)
+        for (int t = 0; t < nb; t++) {
+            int64_t big;
+            cnt[t] = count_block(nl, x, rc2, t, &big);
+            longest = big > longest ? big : longest;
+        }
 #pragma omp single
         {
             int64_t tot = 0;
             for (int u = 0; u < nb; u++)
                 tot += cnt[u];
-            err = reserve_entries(nl, tot);
+            err = reserve_entries(nl, tot + TRASH * nb); /* + the slots */
+            nl->start[n] = tot;
+            nl->nnz = tot;
+            nl->max_row = longest;
         }
+        if (!err) {
 #pragma omp for schedule(static)
-        for (int t = 0; t < nb; t++) {
-            int64_t off = 0;
-            for (int u = 0; u < t; u++)
-                off += cnt[u];
-            for (int i = nl->blk_row[t]; i < nl->blk_row[t + 1] && !err; i++) {
-                int64_t len = nl->start[i], k0 = nl->cstart[i];
-                nl->start[i] = off;
-                const double *xi = x + 3 * i;
-                /* pairs within r_inner from the front, the others from
-                 * the back (without a branch: which it is does not follow
-                 * a pattern); with no split every pair is "inner" */
-                int64_t front = off, back = off + len - 1;
-                for (int64_t m = 0; m < len; m++) {
-                    int j = nl->sj[k0 + m];
-                    double d2 = dist2(xi, x + 3 * j);
-                    int in = d2 < ri2;
-                    int64_t pos = in ? front : back;
-                    front += in;
-                    back -= !in;
-                    nl->j[pos] = j;
-                    nl->r[pos] = sqrt(d2);
-                }
-                nl->mid[i] = front;
-                off += len;
-            }
-            if (t == nb - 1) {
-                nl->start[n] = off;
-                nl->nnz = off;
+            for (int t = 0; t < nb; t++) {
+                int64_t off = 0;
+                for (int u = 0; u < t; u++)
+                    off += cnt[u];
+                write_block(nl, x, rc2, ri2, t, off);
             }
         }
     }
-    return err;
+    return err ? err : keep_positions(nl, x);
 }
 
 static void prefix(struct neighbour_list *nl)
 {
     int64_t acc = 0;
+    nl->max_row = 0;
     for (int i = 0; i < nl->n; i++) {
         int64_t c = nl->start[i];
         nl->start[i] = acc;
         acc += c;
+        nl->max_row = c > nl->max_row ? c : nl->max_row;
     }
     nl->start[nl->n] = acc;
     nl->nnz = acc;
@@ -330,6 +368,7 @@ int neighbour_build_brute(struct neighbour_list *nl, int dim, const double *x,
     (void)dim;
     TRY(reserve_rows(nl, n));
     nl->rc = rc;
+    nl->measure_r = 0;  /* the reference stores its distances */
     nl->nnz_cand = 0;   /* no candidates: not for neighbour_update */
     nl->nblk = 0;
     for (int pass = 0; pass < 2; pass++) {
@@ -376,9 +415,10 @@ void neighbour_free(struct neighbour_list *nl)
     free(nl->start);
     free(nl->j);
     free(nl->r);
+    free(nl->xr);
+    free(nl->rbuf);
     free(nl->cstart);
     free(nl->mid);
-    free(nl->sj);
     for (int t = 0; t < nl->nbuf; t++)
         free(nl->buf[t]);
     free(nl->buf);

@@ -25,6 +25,8 @@
 #ifndef MPSDEM_PARTICLES_NEIGHBOUR_H
 #define MPSDEM_PARTICLES_NEIGHBOUR_H
 
+#include <math.h>
+#include <omp.h>
 #include <stddef.h>
 #include <stdint.h>
 
@@ -34,17 +36,16 @@ struct neighbour_list {
     int n;            /* rows                                           */
     double rc;        /* cut-off radius [m]                             */
     int64_t nnz;      /* entries                                        */
+    int64_t max_row;  /* entries of the longest row                     */
     int64_t *start;   /* n+1: row i is [start[i], start[i+1])           */
     int32_t *j;       /* nnz neighbour indices                          */
-    double *r;        /* nnz distances [m]                              */
+    double *r;        /* nnz distances [m]; NULL with measure_r         */
     size_t cap_n, cap_nnz;
     /* candidates within rc + skin (neighbour_build_skin) */
     double skin;      /* [m]                                            */
     int64_t nnz_cand; /* candidate pairs; nnz <= nnz_cand               */
     int64_t *cstart;  /* n+1: row i's candidates are [cstart[i],
                          cstart[i+1]), held by the buffer of its block  */
-    int32_t *sj;      /* cap_cand: scratch of neighbour_update()        */
-    size_t cap_cand;
     int nblk;         /* blocks of rows of the last build (its threads) */
     int *blk_row;     /* nblk+1: first row of each block                */
     int32_t **buf;    /* per block: its candidates from cstart[blk_row] */
@@ -66,7 +67,43 @@ struct neighbour_list {
     /* NULL for a list; in a view made by neighbour_inner() the end of
      * each row, which operators read through neighbour_row_end(). */
     const int64_t *end;
+    /* With measure_r set before a build, no distances are stored (r is
+     * NULL): neighbour_row_r() measures a row's again from a copy of the
+     * positions of the last build or update, bit for bit the values the
+     * list would have stored (mpsFluid: 8 bytes less per pair, about a
+     * fifth of its peak memory in 3-D). neighbour_build_brute() always
+     * stores them. */
+    int measure_r;
+    double *xr;       /* 3n: positions of the last build/update          */
+    size_t cap_xr;
+    double *rbuf;     /* rbuf_threads rows of cap_rbuf distances         */
+    int64_t cap_rbuf;
+    int rbuf_threads;
 };
+
+/* |b - a|^2, the one formula of the build, the update and
+ * neighbour_row_r (so that their distances agree to the bit). */
+static inline double neighbour_dist2(const double *a, const double *b)
+{
+    return (b[0] - a[0]) * (b[0] - a[0]) + (b[1] - a[1]) * (b[1] - a[1])
+         + (b[2] - a[2]) * (b[2] - a[2]);
+}
+
+/* Distances of entries [k0, k1) of row i (d[k - k0]): the stored ones, or
+ * measured into the calling thread's row of rbuf, valid until the thread
+ * asks for the next row. */
+static inline const double *neighbour_row_r(const struct neighbour_list *nl,
+                                            int i, int64_t k0, int64_t k1)
+{
+    if (nl->r)
+        return nl->r + k0;
+    double *d = nl->rbuf + (size_t)omp_get_thread_num() * (size_t)nl->cap_rbuf;
+    const double *xi = nl->xr + 3 * (size_t)i;
+#pragma omp simd
+    for (int64_t k = k0; k < k1; k++)
+        d[k - k0] = sqrt(neighbour_dist2(xi, nl->xr + 3 * (size_t)nl->j[k]));
+    return d;
+}
 
 /* End of row i: start[i + 1], or the view's end[i]. */
 static inline int64_t neighbour_row_end(const struct neighbour_list *nl,

@@ -3,14 +3,16 @@
  * (`kernel zhang2014;` in system/mpsSchemes).
  *
  * The kernel is a per-pair law, so (doc/design.md C4) its ops table has an
- * array-level entry: the solver evaluates the weights of a whole neighbour
- * list once per step and operator radius, one indirect call per batch.
+ * array-level entry: the operators evaluate the weights of a neighbour
+ * row where they read them (particles/operators/weights.h), one indirect
+ * call per row.
  *
  * Contract of an implementation:
  *   w(r, re)            weight of a neighbour at distance r [m] for the
  *                       radius re [m]; 0 for r >= re; >= 0; non-increasing.
  *   weights(r, n, re, w) the same for n distances (w[k] = w(r[k], re)),
- *                       bit for bit.
+ *                       bit for bit; serial (its callers run in
+ *                       parallel over rows), vectorised.
  *   finite_at_zero      1 when w(0) is finite (coincident particles are
  *                       then harmless); 0 for singular kernels.
  */

@@ -29,7 +29,7 @@ static void weights_koshizuka(const double *r, int64_t n, double re,
                               double *w)
 {
     const double rmin = 1e-6 * re;
-#pragma omp parallel for simd schedule(static)
+#pragma omp simd
     for (int64_t k = 0; k < n; k++) {
         double rr = r[k] > rmin ? r[k] : rmin;
         double v = re / rr - 1.0;

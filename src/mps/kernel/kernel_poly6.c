@@ -22,7 +22,7 @@ static double w_poly6(double r, double re)
  * as w_poly6, so the two agree bit for bit. */
 static void weights_poly6(const double *r, int64_t n, double re, double *w)
 {
-#pragma omp parallel for simd schedule(static)
+#pragma omp simd
     for (int64_t k = 0; k < n; k++) {
         double q = 1.0 - (r[k] / re) * (r[k] / re);
         w[k] = r[k] < re ? q * q * q : 0.0;

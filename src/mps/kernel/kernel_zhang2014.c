@@ -26,7 +26,7 @@ static double w_zhang(double r, double re)
  * and scalar divisions). */
 static void weights_zhang(const double *r, int64_t n, double re, double *w)
 {
-#pragma omp parallel for simd schedule(static)
+#pragma omp simd
     for (int64_t k = 0; k < n; k++) {
         double v = re / (0.85 * r[k] + 0.15 * re) - 1.0;
         w[k] = r[k] < re ? v : 0.0;

@@ -42,14 +42,16 @@ void soil_friction(const struct soil_friction_params *p, int dim,
         if (role[i] == SOIL_SOIL) {
             const double *vi = v + 3 * i, *ai = a + 3 * i;
             const double speed = sqrt(dot3(vi, vi));
-            for (int64_t k = nl->start[i]; k < neighbour_row_end(nl, i); k++) {
+            const int64_t k0 = nl->start[i], k1 = neighbour_row_end(nl, i);
+            const double *rr = neighbour_row_r(nl, i, k0, k1);
+            for (int64_t k = k0; k < k1; k++) {
                 const int j = nl->j[k];
                 if (!(w[k] > 0) || (role[j] != SOIL_SOIL && role[j] != SOIL_WALL))
                     continue;
                 const int wall = role[j] == SOIL_WALL;
                 double e[3], vr[3];
                 for (int q = 0; q < 3; q++) {
-                    e[q] = (x[3 * j + q] - x[3 * i + q]) / nl->r[k];
+                    e[q] = (x[3 * j + q] - x[3 * i + q]) / rr[k - k0];
                     vr[q] = vi[q] - v[3 * j + q];
                 }
                 const double vn = dot3(vr, e);

@@ -188,7 +188,8 @@ static int yield_pressure(struct mps_solver *s)
         if (m->role[i] != SOIL_SOIL || P->fs[i] != MPS_SURFACE || gm == 0)
             continue;
         double F[3];
-        pop_surface_vector_row(&in, s->w_n, P->x, P->inv_eps, i, F);
+        pop_surface_vector_row(&in, POP_STORED(s->w_n), P->x, P->inv_eps, i,
+                               F);
         const double f = sqrt(F[0] * F[0] + F[1] * F[1] + F[2] * F[2]);
         double cg = 1.0, cz = 1.0;
         if (f > 0) {
@@ -231,8 +232,8 @@ int mps_soil_implicit(struct mps_solver *s, double dt, double *v)
         m->unk[i] = m->role[i] == SOIL_SOIL ? n++ : -1;
     if (n == 0)
         return SIM_OK;
-    const int64_t nnz = pop_matrix_rowptr(&s->nl, P->n, s->w_l, m->unk, n,
-                                          m->A.rowptr);
+    const int64_t nnz = pop_matrix_rowptr(&s->nl, P->n, POP_STORED(s->w_l),
+                                          m->unk, n, m->A.rowptr);
     TRY(csr_reserve(&m->A, &m->cap_nnz, nnz));
     m->A.n = n;
     m->A.nnz = nnz;

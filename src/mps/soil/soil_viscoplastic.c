@@ -52,14 +52,16 @@ void soil_vp_viscosity(const struct soil_vp_params *p, int dim,
             continue;
         }
         double m[9] = { 0 }, g[3][3] = { { 0 } }, s[3][3] = { { 0 } };
-        for (int64_t k = nl->start[i]; k < neighbour_row_end(nl, i); k++) {
+        const int64_t k0 = nl->start[i], k1 = neighbour_row_end(nl, i);
+        const double *rr = neighbour_row_r(nl, i, k0, k1);
+        for (int64_t k = k0; k < k1; k++) {
             if (!(w[k] > 0))
                 continue;
             const int j = nl->j[k];
             double r[3];
             for (int a = 0; a < 3; a++)
                 r[a] = x[3 * j + a] - x[3 * i + a];
-            const double f = w[k] / (nl->r[k] * nl->r[k]);
+            const double f = w[k] / (rr[k - k0] * rr[k - k0]);
             for (int a = 0; a < 3; a++) {
                 const double dv = v[3 * j + a] - v[3 * i + a];
                 for (int b = 0; b < 3; b++) {

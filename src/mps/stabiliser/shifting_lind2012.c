@@ -46,15 +46,18 @@ static void asymmetry(const struct mps_solver *s, int i, double G[3],
                                G, F);
 }
 
-static int near_surface(const struct mps_solver *s, int i)
+static int near_surface(const struct mps_solver *s,
+                        const struct pop_weights *Wg, int i)
 {
     const struct mps_particles *P = &s->P;
     const struct neighbour_list *nl = &s->nl;
     if (P->fs[i] == MPS_SURFACE)
         return 1;
-    for (int64_t k = nl->start[i]; k < nl->start[i + 1]; k++) {
+    const int64_t k0 = nl->start[i], k1 = nl->start[i + 1];
+    const double *w = pop_weights_of(Wg, nl, i, k0, k1);
+    for (int64_t k = k0; k < k1; k++) {
         int j = nl->j[k];
-        if (s->w_g[k] > 0 && P->type[j] == MPS_FLUID
+        if (w[k - k0] > 0 && P->type[j] == MPS_FLUID
             && P->fs[j] == MPS_SURFACE)
             return 1;
     }
@@ -69,12 +72,13 @@ static int apply_shifting(struct mps_solver *s, double dt)
     const double cap = MAX_SHIFT * s->dp;
     double *dr = s->grad;
     const int32_t *fixed = mps_soil_unshifted(s);
+    const struct pop_weights Wg = mps_w(s, MPS_W_G);
 #pragma omp parallel for schedule(static)
     for (int i = 0; i < P->n; i++) {
         double G[3], F[3], d[3] = { 0, 0, 0 };
         if (P->type[i] == MPS_FLUID && !(fixed && fixed[i] == 1)) {
             asymmetry(s, i, G, F);
-            pop_fickian_shift(G, F, D, near_surface(s, i), cap, d);
+            pop_fickian_shift(G, F, D, near_surface(s, &Wg, i), cap, d);
             if (P->dim == 2)
                 d[2] = 0;
         }

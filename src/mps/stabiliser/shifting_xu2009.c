@@ -40,9 +40,11 @@ static int apply_shifting(struct mps_solver *s, double dt)
     for (int i = 0; i < P->n; i++) {
         double R[3] = { 0, 0, 0 };
         if (P->type[i] == MPS_FLUID && P->fs[i] == MPS_INNER
-            && !(fixed && fixed[i] == 1))
-            for (int64_t k = nl->start[i]; k < nl->start[i + 1]; k++) {
-                double r = nl->r[k];
+            && !(fixed && fixed[i] == 1)) {
+            const int64_t k0 = nl->start[i], k1 = nl->start[i + 1];
+            const double *rr = neighbour_row_r(nl, i, k0, k1);
+            for (int64_t k = k0; k < k1; k++) {
+                double r = rr[k - k0];
                 if (r >= re || r == 0)
                     continue;
                 int j = nl->j[k];
@@ -50,6 +52,7 @@ static int apply_shifting(struct mps_solver *s, double dt)
                 for (int q = 0; q < 3; q++)
                     R[q] += f * (P->x[3 * i + q] - P->x[3 * j + q]);
             }
+        }
         for (int q = 0; q < 3; q++)
             dr[3 * i + q] = ca * R[q];
     }

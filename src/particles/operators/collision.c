@@ -12,9 +12,10 @@ void pop_collision(const struct neighbour_list *nl, const double *x,
     for (int i = 0; i < nl->n; i++) {
         double d[3] = { 0, 0, 0 };
         if (type[i] == 0) {
-            const int64_t k1 = neighbour_row_end(nl, i);
-            for (int64_t k = nl->start[i]; k < k1; k++) {
-                double r = nl->r[k];
+            const int64_t k0 = nl->start[i], k1 = neighbour_row_end(nl, i);
+            const double *rr = neighbour_row_r(nl, i, k0, k1);
+            for (int64_t k = k0; k < k1; k++) {
+                double r = rr[k - k0];
                 if (r >= rc || r == 0)
                     continue;
                 int j = nl->j[k];

@@ -98,7 +98,8 @@ int pop_moment_solve(int dim, const double m[9], const double v[3],
     return 1;
 }
 
-void pop_gradient_corrected(const struct neighbour_list *nl, const double *w,
+void pop_gradient_corrected(const struct neighbour_list *nl,
+                            const struct pop_weights *W,
                             int dim, double c, const double *x,
                             const double *phi, const double *inv_eps,
                             const uint8_t *rows, double *out)
@@ -109,15 +110,17 @@ void pop_gradient_corrected(const struct neighbour_list *nl, const double *w,
             continue;
         double v[3] = { 0, 0, 0 }, m[9] = { 0 }, g[3];
         const double *xi = x + 3 * i;
-        const int64_t k1 = neighbour_row_end(nl, i);
-        for (int64_t k = nl->start[i]; k < k1; k++) {
+        const int64_t k0 = nl->start[i], k1 = neighbour_row_end(nl, i);
+        const double *rr = neighbour_row_r(nl, i, k0, k1);
+        const double *w = pop_weights_row(W, k0, rr, k1 - k0);
+        for (int64_t k = k0; k < k1; k++) {
             int j = nl->j[k];
-            double r = nl->r[k];
-            if (w[k] == 0 || r == 0)
+            double r = rr[k - k0], wk = w[k - k0];
+            if (wk == 0 || r == 0)
                 continue;
             double d[3] = { x[3 * j] - xi[0], x[3 * j + 1] - xi[1],
                             x[3 * j + 2] - xi[2] };
-            double a = w[k] * IEPS(j) / (r * r);
+            double a = wk * IEPS(j) / (r * r);
             for (int q = 0; q < 3; q++) {
                 v[q] += a * (phi[j] - phi[i]) * d[q];
                 for (int s = 0; s < 3; s++)

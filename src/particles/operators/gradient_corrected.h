@@ -9,16 +9,19 @@
 
 #include <stdint.h>
 
+#include "particles/operators/weights.h"
+
 struct neighbour_list;
 
 /* grad phi_i = C_i sum_j (phi_j - phi_i) r_ij w_ij / (|r_ij|^2 eps_j),
  * C_i the inverse moment matrix; exact for linear phi wherever C_i exists
  * (else the uncorrected form with normalisation c, MPS: d/n0). Other
  * arguments as pop_gradient (operators.h). */
-void pop_gradient_corrected(const struct neighbour_list *nl, const double *w,
-                            int dim, double c, const double *x,
-                            const double *phi, const double *inv_eps,
-                            const uint8_t *rows, double *out);
+void pop_gradient_corrected(const struct neighbour_list *nl,
+                            const struct pop_weights *W, int dim, double c,
+                            const double *x, const double *phi,
+                            const double *inv_eps, const uint8_t *rows,
+                            double *out);
 
 /* Solve m g = v for the symmetric moment matrix m (row-major 3x3; the
  * z row and column unused when dim = 2); returns 0 (g untouched) when the

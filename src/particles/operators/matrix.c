@@ -9,7 +9,8 @@
 #include "particles/neighbour.h"
 
 int64_t pop_matrix_rowptr(const struct neighbour_list *nl, int n,
-                          const double *w, const int32_t *unk, int m,
+                          const struct pop_weights *W, const int32_t *unk,
+                          int m,
                           int64_t *rowptr)
 {
 #pragma omp parallel for schedule(static)
@@ -17,8 +18,10 @@ int64_t pop_matrix_rowptr(const struct neighbour_list *nl, int n,
         if (unk[i] < 0)
             continue;
         int64_t len = 1;
-        for (int64_t k = nl->start[i]; k < nl->start[i + 1]; k++)
-            len += w[k] > 0 && unk[nl->j[k]] >= 0;
+        const int64_t k0 = nl->start[i], k1 = nl->start[i + 1];
+        const double *w = pop_weights_of(W, nl, i, k0, k1);
+        for (int64_t k = k0; k < k1; k++)
+            len += w[k - k0] > 0 && unk[nl->j[k]] >= 0;
         rowptr[unk[i] + 1] = len;
     }
     rowptr[0] = 0;

@@ -8,6 +8,8 @@
 
 #include <stdint.h>
 
+#include "particles/operators/weights.h"
+
 struct neighbour_list;
 
 /* Row pointers over the unknowns: particle i with unk[i] >= 0 is row
@@ -16,7 +18,7 @@ struct neighbour_list;
  * the caller's convention). rowptr has m + 1 entries; returns the number
  * of entries, rowptr[m]. Particles 0 .. n-1 of the list are visited. */
 int64_t pop_matrix_rowptr(const struct neighbour_list *nl, int n,
-                          const double *w, const int32_t *unk, int m,
-                          int64_t *rowptr);
+                          const struct pop_weights *W, const int32_t *unk,
+                          int m, int64_t *rowptr);
 
 #endif

@@ -69,24 +69,26 @@ int pop_lattice_constants(pop_weight_fn *wf, int dim, double dp, double re,
     return SIM_OK;
 }
 
-void pop_number_density(const struct neighbour_list *nl, const double *w,
-                        const double *inv_eps, const uint8_t *rows, double *n)
+void pop_number_density(const struct neighbour_list *nl,
+                        const struct pop_weights *W, const double *inv_eps,
+                        const uint8_t *rows, double *n)
 {
 #pragma omp parallel for schedule(static)
     for (int i = 0; i < nl->n; i++) {
         if (rows && !rows[i])
             continue;
         double s = 0;
-        const int64_t k1 = neighbour_row_end(nl, i);
-        for (int64_t k = nl->start[i]; k < k1; k++)
-            s += w[k] * IEPS(nl->j[k]);
+        const int64_t k0 = nl->start[i], k1 = neighbour_row_end(nl, i);
+        const double *w = pop_weights_of(W, nl, i, k0, k1);
+        for (int64_t k = k0; k < k1; k++)
+            s += w[k - k0] * IEPS(nl->j[k]);
         n[i] = s;
     }
 }
 
-void pop_gradient(const struct neighbour_list *nl, const double *w, double c,
-                  const double *x, const double *phi, const double *inv_eps,
-                  const uint8_t *rows, double *out)
+void pop_gradient(const struct neighbour_list *nl, const struct pop_weights *W,
+                  double c, const double *x, const double *phi,
+                  const double *inv_eps, const uint8_t *rows, double *out)
 {
 #pragma omp parallel for schedule(static)
     for (int i = 0; i < nl->n; i++) {
@@ -94,13 +96,15 @@ void pop_gradient(const struct neighbour_list *nl, const double *w, double c,
             continue;
         double g[3] = { 0, 0, 0 };
         const double *xi = x + 3 * i;
-        const int64_t k1 = neighbour_row_end(nl, i);
-        for (int64_t k = nl->start[i]; k < k1; k++) {
+        const int64_t k0 = nl->start[i], k1 = neighbour_row_end(nl, i);
+        const double *rr = neighbour_row_r(nl, i, k0, k1);
+        const double *w = pop_weights_row(W, k0, rr, k1 - k0);
+        for (int64_t k = k0; k < k1; k++) {
             int j = nl->j[k];
-            double r = nl->r[k];
-            if (w[k] == 0 || r == 0)
+            double r = rr[k - k0], wk = w[k - k0];
+            if (wk == 0 || r == 0)
                 continue;
-            double f = (phi[j] + phi[i]) * w[k] * IEPS(j) / (r * r);
+            double f = (phi[j] + phi[i]) * wk * IEPS(j) / (r * r);
             for (int q = 0; q < 3; q++)
                 g[q] += f * (x[3 * j + q] - xi[q]);
         }
@@ -109,9 +113,10 @@ void pop_gradient(const struct neighbour_list *nl, const double *w, double c,
     }
 }
 
-void pop_gradient_pmin(const struct neighbour_list *nl, const double *w,
-                       double c, const double *x, const double *phi,
-                       const double *inv_eps, const uint8_t *rows, double *out)
+void pop_gradient_pmin(const struct neighbour_list *nl,
+                       const struct pop_weights *W, double c, const double *x,
+                       const double *phi, const double *inv_eps,
+                       const uint8_t *rows, double *out)
 {
 #pragma omp parallel for schedule(static)
     for (int i = 0; i < nl->n; i++) {
@@ -119,16 +124,18 @@ void pop_gradient_pmin(const struct neighbour_list *nl, const double *w,
             continue;
         double g[3] = { 0, 0, 0 }, pmin = phi[i];
         const double *xi = x + 3 * i;
-        const int64_t k1 = neighbour_row_end(nl, i);
-        for (int64_t k = nl->start[i]; k < k1; k++)
-            if (w[k] > 0)
+        const int64_t k0 = nl->start[i], k1 = neighbour_row_end(nl, i);
+        const double *rr = neighbour_row_r(nl, i, k0, k1);
+        const double *w = pop_weights_row(W, k0, rr, k1 - k0);
+        for (int64_t k = k0; k < k1; k++)
+            if (w[k - k0] > 0)
                 pmin = fmin(pmin, phi[nl->j[k]]);
-        for (int64_t k = nl->start[i]; k < k1; k++) {
+        for (int64_t k = k0; k < k1; k++) {
             int j = nl->j[k];
-            double r = nl->r[k];
-            if (w[k] == 0 || r == 0)
+            double r = rr[k - k0], wk = w[k - k0];
+            if (wk == 0 || r == 0)
                 continue;
-            double f = (phi[j] - pmin) * w[k] * IEPS(j) / (r * r);
+            double f = (phi[j] - pmin) * wk * IEPS(j) / (r * r);
             for (int q = 0; q < 3; q++)
                 g[q] += f * (x[3 * j + q] - xi[q]);
         }
@@ -137,9 +144,10 @@ void pop_gradient_pmin(const struct neighbour_list *nl, const double *w,
     }
 }
 
-void pop_divergence(const struct neighbour_list *nl, const double *w,
-                    double c, const double *x, const double *u,
-                    const double *inv_eps, const uint8_t *rows, double *out)
+void pop_divergence(const struct neighbour_list *nl,
+                    const struct pop_weights *W, double c, const double *x,
+                    const double *u, const double *inv_eps,
+                    const uint8_t *rows, double *out)
 {
 #pragma omp parallel for schedule(static)
     for (int i = 0; i < nl->n; i++) {
@@ -147,16 +155,18 @@ void pop_divergence(const struct neighbour_list *nl, const double *w,
             continue;
         double s = 0;
         const double *xi = x + 3 * i, *ui = u + 3 * i;
-        const int64_t k1 = neighbour_row_end(nl, i);
-        for (int64_t k = nl->start[i]; k < k1; k++) {
+        const int64_t k0 = nl->start[i], k1 = neighbour_row_end(nl, i);
+        const double *rr = neighbour_row_r(nl, i, k0, k1);
+        const double *w = pop_weights_row(W, k0, rr, k1 - k0);
+        for (int64_t k = k0; k < k1; k++) {
             int j = nl->j[k];
-            double r = nl->r[k];
-            if (w[k] == 0 || r == 0)
+            double r = rr[k - k0], wk = w[k - k0];
+            if (wk == 0 || r == 0)
                 continue;
             double d = 0;
             for (int q = 0; q < 3; q++)
                 d += (u[3 * j + q] - ui[q]) * (x[3 * j + q] - xi[q]);
-            s += d * w[k] * IEPS(j) / (r * r);
+            s += d * wk * IEPS(j) / (r * r);
         }
         out[i] = c * s;
     }
@@ -165,15 +175,17 @@ void pop_divergence(const struct neighbour_list *nl, const double *w,
 /* One row of (10) for nc components; nc a constant after inlining, so
  * that the component loop unrolls, and the porosity test leaves the loop. */
 static inline void laplacian_row(const struct neighbour_list *nl,
-                                 const double *w, int nc, const double *phi,
-                                 const double *inv_eps, int i, double *s)
+                                 const struct pop_weights *W, int nc,
+                                 const double *phi, const double *inv_eps,
+                                 int i, double *s)
 {
     const int64_t k0 = nl->start[i], k1 = nl->start[i + 1];
+    const double *w = pop_weights_of(W, nl, i, k0, k1);
     const double *pi = phi + (size_t)nc * i;
     if (inv_eps)
         for (int64_t k = k0; k < k1; k++) {
             int j = nl->j[k];
-            double f = w[k] * inv_eps[j];
+            double f = w[k - k0] * inv_eps[j];
             for (int q = 0; q < nc; q++)
                 s[q] += (phi[(size_t)nc * j + q] - pi[q]) * f;
         }
@@ -181,13 +193,14 @@ static inline void laplacian_row(const struct neighbour_list *nl,
         for (int64_t k = k0; k < k1; k++) {
             int j = nl->j[k];
             for (int q = 0; q < nc; q++)
-                s[q] += (phi[(size_t)nc * j + q] - pi[q]) * w[k];
+                s[q] += (phi[(size_t)nc * j + q] - pi[q]) * w[k - k0];
         }
 }
 
-void pop_laplacian(const struct neighbour_list *nl, const double *w,
-                   double c, int ncomp, const double *phi,
-                   const double *inv_eps, const uint8_t *rows, double *out)
+void pop_laplacian(const struct neighbour_list *nl,
+                   const struct pop_weights *W, double c, int ncomp,
+                   const double *phi, const double *inv_eps,
+                   const uint8_t *rows, double *out)
 {
 #pragma omp parallel for schedule(static)
     for (int i = 0; i < nl->n; i++) {
@@ -195,36 +208,39 @@ void pop_laplacian(const struct neighbour_list *nl, const double *w,
             continue;
         double s[3] = { 0, 0, 0 };
         if (ncomp == 3)
-            laplacian_row(nl, w, 3, phi, inv_eps, i, s);
+            laplacian_row(nl, W, 3, phi, inv_eps, i, s);
         else if (ncomp == 1)
-            laplacian_row(nl, w, 1, phi, inv_eps, i, s);
+            laplacian_row(nl, W, 1, phi, inv_eps, i, s);
         else
-            laplacian_row(nl, w, ncomp, phi, inv_eps, i, s);
+            laplacian_row(nl, W, ncomp, phi, inv_eps, i, s);
         for (int q = 0; q < ncomp; q++)
             out[ncomp * i + q] = c * s[q];
     }
 }
 
-void pop_surface_vector_row(const struct neighbour_list *nl, const double *w,
-                            const double *x, const double *inv_eps, int i,
-                            double F[3])
+void pop_surface_vector_row(const struct neighbour_list *nl,
+                            const struct pop_weights *W, const double *x,
+                            const double *inv_eps, int i, double F[3])
 {
     const double *xi = x + 3 * i;
-    const int64_t k1 = neighbour_row_end(nl, i);
+    const int64_t k0 = nl->start[i], k1 = neighbour_row_end(nl, i);
+    const double *rr = neighbour_row_r(nl, i, k0, k1);
+    const double *w = pop_weights_row(W, k0, rr, k1 - k0);
     F[0] = F[1] = F[2] = 0;
-    for (int64_t k = nl->start[i]; k < k1; k++) {
+    for (int64_t k = k0; k < k1; k++) {
         int j = nl->j[k];
-        double r = nl->r[k];
-        if (w[k] == 0 || r == 0)
+        double r = rr[k - k0], wk = w[k - k0];
+        if (wk == 0 || r == 0)
             continue;
-        double f = w[k] * IEPS(j) / r;
+        double f = wk * IEPS(j) / r;
         for (int q = 0; q < 3; q++)
             F[q] += f * (x[3 * j + q] - xi[q]);
     }
 }
 
-void pop_surface_vector(const struct neighbour_list *nl, const double *w,
-                        double c, const double *x, const double *inv_eps,
+void pop_surface_vector(const struct neighbour_list *nl,
+                        const struct pop_weights *W, double c,
+                        const double *x, const double *inv_eps,
                         const uint8_t *rows, double *out)
 {
 #pragma omp parallel for schedule(static)
@@ -232,7 +248,7 @@ void pop_surface_vector(const struct neighbour_list *nl, const double *w,
         if (rows && !rows[i])
             continue;
         double F[3];
-        pop_surface_vector_row(nl, w, x, inv_eps, i, F);
+        pop_surface_vector_row(nl, W, x, inv_eps, i, F);
         for (int q = 0; q < 3; q++)
             out[3 * i + q] = c * F[q];
     }

@@ -27,6 +27,8 @@
 
 #include <stdint.h>
 
+#include "particles/operators/weights.h"
+
 struct neighbour_list;
 
 /* A kernel w(r; re): 0 for r >= re (mps_kernel_ops.w is one). */
@@ -47,48 +49,51 @@ int pop_lattice_constants(pop_weight_fn *w, int dim, double dp, double re,
                           struct pop_lattice *out);
 
 /* n_i = sum_j w_ij / eps_j  (eq. 7). */
-void pop_number_density(const struct neighbour_list *nl, const double *w,
-                        const double *inv_eps, const uint8_t *rows,
-                        double *n);
+void pop_number_density(const struct neighbour_list *nl,
+                        const struct pop_weights *W, const double *inv_eps,
+                        const uint8_t *rows, double *n);
 
 /* grad phi_i = c sum_j (phi_j + phi_i) r_ij w_ij / (|r_ij|^2 eps_j)
  * (eq. 8 with c = d/n0); out is 3 values per particle (z = 0 in 2-D). */
-void pop_gradient(const struct neighbour_list *nl, const double *w, double c,
-                  const double *x, const double *phi, const double *inv_eps,
-                  const uint8_t *rows, double *out);
+void pop_gradient(const struct neighbour_list *nl, const struct pop_weights *W,
+                  double c, const double *x, const double *phi,
+                  const double *inv_eps, const uint8_t *rows, double *out);
 
 /* Koshizuka and Oka (1996) eq. (11): the stable first-order form
  * grad phi_i = c sum_j (phi_j - phi_min,i) r_ij w_ij / (|r_ij|^2 eps_j),
  * phi_min,i the smallest phi among i and its neighbours within the radius:
  * every pair term is repulsive, so particles cannot cluster (tensile
  * instability), at the price of momentum conservation. */
-void pop_gradient_pmin(const struct neighbour_list *nl, const double *w,
-                       double c, const double *x, const double *phi,
-                       const double *inv_eps, const uint8_t *rows,
-                       double *out);
+void pop_gradient_pmin(const struct neighbour_list *nl,
+                       const struct pop_weights *W, double c, const double *x,
+                       const double *phi, const double *inv_eps,
+                       const uint8_t *rows, double *out);
 
 /* div u_i = c sum_j (u_j - u_i).r_ij w_ij / (|r_ij|^2 eps_j)
  * (eq. 9 with c = d/n0). */
-void pop_divergence(const struct neighbour_list *nl, const double *w,
-                    double c, const double *x, const double *u,
-                    const double *inv_eps, const uint8_t *rows, double *out);
+void pop_divergence(const struct neighbour_list *nl,
+                    const struct pop_weights *W, double c, const double *x,
+                    const double *u, const double *inv_eps,
+                    const uint8_t *rows, double *out);
 
 /* lap phi_i = c sum_j (phi_j - phi_i) w_ij / eps_j (eq. 10 with
  * c = 2d/(n0 lambda)), for ncomp interleaved components (1 for pressure,
  * 3 for velocity). Whole rows: no view (neighbour_inner) is honoured. */
-void pop_laplacian(const struct neighbour_list *nl, const double *w,
-                   double c, int ncomp, const double *phi,
-                   const double *inv_eps, const uint8_t *rows, double *out);
+void pop_laplacian(const struct neighbour_list *nl,
+                   const struct pop_weights *W, double c, int ncomp,
+                   const double *phi, const double *inv_eps,
+                   const uint8_t *rows, double *out);
 
 /* F_i = c sum_j r_ij / |r_ij| w_ij / eps_j  (eq. 15 with c = d/n0),
  * 3 per particle; pop_surface_vector_row: the sum of row i alone,
  * unscaled (c = 1), for a caller that needs it for a few particles. */
-void pop_surface_vector_row(const struct neighbour_list *nl, const double *w,
-                            const double *x, const double *inv_eps, int i,
-                            double F[3]);
-void pop_surface_vector(const struct neighbour_list *nl, const double *w,
-                        double c, const double *x, const double *inv_eps,
-                        const uint8_t *rows, double *out);
+void pop_surface_vector_row(const struct neighbour_list *nl,
+                            const struct pop_weights *W, const double *x,
+                            const double *inv_eps, int i, double F[3]);
+void pop_surface_vector(const struct neighbour_list *nl,
+                        const struct pop_weights *W, double c, const double *x,
+                        const double *inv_eps, const uint8_t *rows,
+                        double *out);
 
 /* Concentration gradient and free-surface vector of particle i alone
  * (Lind et al. 2012 sect. 3 with a unit concentration, as written in

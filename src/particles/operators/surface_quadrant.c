@@ -32,9 +32,11 @@ void pop_surface_quadrant(const struct neighbour_list *nl, const double *x,
         if (rows && !rows[i])
             continue;
         unsigned sect = 0, col = 0; /* bits: east west north south */
-        for (int64_t k = nl->start[i]; k < nl->start[i + 1]; k++) {
+        const int64_t k0 = nl->start[i], k1 = nl->start[i + 1];
+        const double *rr = neighbour_row_r(nl, i, k0, k1);
+        for (int64_t k = k0; k < k1; k++) {
             int j = nl->j[k];
-            if (nl->r[k] >= radius || (counts && !counts[j]))
+            if (rr[k - k0] >= radius || (counts && !counts[j]))
                 continue;
             double dx = x[3 * j] - x[3 * i], dy = x[3 * j + 1] - x[3 * i + 1];
             if (facing && (facing[3 * j] != 0 || facing[3 * j + 1] != 0)) {

@@ -29,13 +29,15 @@ int pop_wall_partners(const struct neighbour_list *nl, int n,
         if (type[i] != seeker)
             continue;
         double best = INFINITY;
-        for (int64_t k = nl->start[i]; k < nl->start[i + 1]; k++) {
+        const int64_t k0 = nl->start[i], k1 = nl->start[i + 1];
+        const double *rr = neighbour_row_r(nl, i, k0, k1);
+        for (int64_t k = k0; k < k1; k++) {
             int j = nl->j[k];
             if (type[j] != target)
                 continue;
             if (allow && !allow(ctx, i, j))
                 continue;
-            double r = nl->r[k];
+            double r = rr[k - k0];
             if (r < best - tol
                 || (r < best + tol && partner[i] >= 0
                     && id[j] < id[partner[i]])) {
@@ -51,12 +53,15 @@ int pop_wall_partners(const struct neighbour_list *nl, int n,
             if (type[i] != seeker || partner[i] >= 0)
                 continue;
             double best = INFINITY;
-            for (int64_t k = nl->start[i]; k < nl->start[i + 1]; k++) {
+            const int64_t k0 = nl->start[i], k1 = nl->start[i + 1];
+            const double *rr = neighbour_row_r(nl, i, k0, k1);
+            for (int64_t k = k0; k < k1; k++) {
                 int j = nl->j[k];
                 if (allow && !allow(ctx, i, j))
                     continue;
-                if (type[j] == seeker && partner[j] >= 0 && nl->r[k] < best) {
-                    best = nl->r[k];
+                if (type[j] == seeker && partner[j] >= 0
+                    && rr[k - k0] < best) {
+                    best = rr[k - k0];
                     partner[i] = partner[j];
                 }
             }
@@ -66,15 +71,18 @@ int pop_wall_partners(const struct neighbour_list *nl, int n,
     return orphans;
 }
 
-int pop_wall_extrapolate(const struct neighbour_list *nl, const double *w,
+int pop_wall_extrapolate(const struct neighbour_list *nl,
+                         const struct pop_weights *W,
                          const double *x, const double *p,
                          const int32_t *type, int32_t fluid, double rho,
                          const double g[3], int i, double *out)
 {
     double sw = 0, sp = 0;
-    for (int64_t k = nl->start[i]; k < nl->start[i + 1]; k++) {
+    const int64_t k0 = nl->start[i], k1 = nl->start[i + 1];
+    const double *w = pop_weights_of(W, nl, i, k0, k1);
+    for (int64_t k = k0; k < k1; k++) {
         int j = nl->j[k];
-        double wk = w[k];
+        double wk = w[k - k0];
         if (wk == 0 || type[j] != fluid)
             continue;
         double pj = p[j];

@@ -16,6 +16,8 @@
 
 #include <stdint.h>
 
+#include "particles/operators/weights.h"
+
 struct neighbour_list;
 
 /* May particle i take j (or j's partner) as its partner? NULL: always. */
@@ -40,9 +42,9 @@ int pop_wall_partners(const struct neighbour_list *nl, int n,
  * from its neighbours j of class `fluid` with w[k] > 0,
  *   p_i = sum_j (p_j + rho g.(r_i - r_j)) w_ij / sum_j w_ij.
  * Returns 0 (p untouched) when i has no such neighbour. */
-int pop_wall_extrapolate(const struct neighbour_list *nl, const double *w,
-                         const double *x, const double *p,
-                         const int32_t *type, int32_t fluid, double rho,
-                         const double g[3], int i, double *out);
+int pop_wall_extrapolate(const struct neighbour_list *nl,
+                         const struct pop_weights *W, const double *x,
+                         const double *p, const int32_t *type, int32_t fluid,
+                         double rho, const double g[3], int i, double *out);
 
 #endif

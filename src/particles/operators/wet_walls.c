@@ -22,11 +22,14 @@ void pop_wet_walls(const struct neighbour_list *nl, const double *x,
         int height = by_height && gn > 0
                   && -(up[0] * ni[0] + up[1] * ni[1]) > -0.5;
         int w = 0;
-        for (int64_t k = nl->start[i]; k < nl->start[i + 1] && !w; k++) {
+        const int64_t k0 = nl->start[i], k1 = nl->start[i + 1];
+        const double *rr = neighbour_row_r(nl, i, k0, k1);
+        for (int64_t k = k0; k < k1 && !w; k++) {
             int j = nl->j[k];
             double h = up[0] * (x[3 * j] - x[3 * i])
                      + up[1] * (x[3 * j + 1] - x[3 * i + 1]);
-            w = type[j] == 0 && nl->r[k] < reach && (!height || h >= -0.5 * dl);
+            w = type[j] == 0 && rr[k - k0] < reach
+             && (!height || h >= -0.5 * dl);
         }
         wet[i] = (uint8_t)w;
     }

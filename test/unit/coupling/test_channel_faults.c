@@ -167,7 +167,7 @@ static void test_second_signal_unlinks_and_kills(void **state)
 
 struct peer { const char *name; int side; double sleep; int action; };
 enum { OPEN_THEN_KILL, OPEN_THEN_STOP, OPEN_THEN_EXIT, OPEN_SEND_WAIT,
-       OPEN_THEN_CLOSE };
+       OPEN_THEN_CLOSE, OPEN_COMPUTE_SILENT };
 
 static int peer_main(void *arg)
 {
@@ -202,6 +202,19 @@ static int peer_main(void *arg)
     case OPEN_THEN_CLOSE:
         sleep_s(p->sleep);
         break;
+    case OPEN_COMPUTE_SILENT: {
+        /* a starved program: no heartbeat (as when the scheduler gives a
+         * niced run no CPU for seconds), but running, then it sends */
+        chan_heartbeat_stop(c);
+        double t0 = now_s();
+        volatile double acc = 0;
+        while (now_s() - t0 < p->sleep)
+            acc += 1e-9;
+        if (channel_send(c, &f, &x))
+            return 4;
+        return channel_recv(c, &f, &data) == SIM_ERR_PEER &&
+               channel_close(c, SIM_ERR_PEER) == SIM_OK ? 0 : 5;
+    }
     }
     return channel_close(c, SIM_OK) ? 6 : 0;
 }
@@ -282,6 +295,26 @@ static void test_peer_stopped_is_hung(void **state)
     kill(pid, SIGKILL);
     assert_int_equal(reap(pid), 128 + SIGKILL);
     assert_false(segment_exists(name));
+}
+
+/* Silent but running (state R, CPU time growing) is starved, not hung: the
+ * wait goes on past three heartbeat silences and takes the frame. */
+static void test_peer_starved_not_hung(void **state)
+{
+    char name[64];
+    struct channel_frame f;
+    const void *data;
+    pid_t pid;
+    (void)state;
+    unique_name(name, sizeof name);
+    struct peer p = { name, CHANNEL_SOLID, 3.0, OPEN_COMPUTE_SILENT };
+    struct channel *c = open_with(&p, &pid);
+    double t0 = now_s();
+    assert_int_equal(channel_recv(c, &f, &data), SIM_OK);
+    assert_true(now_s() - t0 > 2.5);
+    assert_int_equal(channel_recv_done(c), SIM_OK);
+    assert_int_equal(channel_close(c, SIM_ERR_PEER), SIM_OK);
+    assert_int_equal(reap(pid), 0);
 }
 
 static void test_peer_exit_without_close(void **state)
@@ -462,6 +495,7 @@ int main(void)
         cmocka_unit_test(test_peer_killed_while_receiving),
         cmocka_unit_test(test_peer_killed_while_sending),
         cmocka_unit_test(test_peer_stopped_is_hung),
+        cmocka_unit_test(test_peer_starved_not_hung),
         cmocka_unit_test(test_peer_exit_without_close),
         cmocka_unit_test(test_timeout_on_live_silent_peer),
         cmocka_unit_test(test_stale_segment_replaced),

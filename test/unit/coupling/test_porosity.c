@@ -270,16 +270,17 @@ static void test_consistent_gradient(void **state)
         }
     }
     start[N] = e;
+    const struct neighbour_list nl = { .n = N, .start = start, .j = j };
     for (int i = 0; i < N; i++)
         p[i] = 1234.5;
-    coupling_gradient_consistent(N, start, j, w, 3, n0, x, p, ie, NULL, g);
+    coupling_gradient_consistent(&nl, POP_STORED(w), 3, n0, x, p, ie, NULL, g);
     for (int k = 0; k < 3 * N; k++)
         assert_true(g[k] == 0.0);
     const double a[3] = { 3.0, -7.5, -9810.0 };
     for (int i = 0; i < N; i++)
         p[i] = 100 + a[0] * x[3 * i] + a[1] * x[3 * i + 1] +
                a[2] * x[3 * i + 2];
-    coupling_gradient_consistent(N, start, j, w, 3, n0, x, p, NULL, NULL, g);
+    coupling_gradient_consistent(&nl, POP_STORED(w), 3, n0, x, p, NULL, NULL, g);
     for (int c = 0; c < 3; c++)
         assert_true(fabs(g[3 * (N / 2) + c] - a[c]) <= 1e-9 * 9810);
 }

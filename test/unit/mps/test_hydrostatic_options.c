@@ -62,7 +62,7 @@ static int check_linear(int dim, int half)
     struct pop_lattice L;
     assert_int_equal(mps_lattice_constants(&mps_kernel_zhang2014, dim, 1.0, re,
                                            &L), 0);
-    mps_gradient_corrected(&nl, w, dim, L.n0, x, phi, NULL, NULL, g);
+    mps_gradient_corrected(&nl, POP_STORED(w), dim, L.n0, x, phi, NULL, NULL, g);
     int fallback = 0;
     for (int i = 0; i < n; i++) {
         double e = 0;
@@ -100,7 +100,7 @@ static void test_gc_fallback(void **st)
     double w[16];
     assert_true(nl.nnz <= 16);
     mps_kernel_zhang2014.weights(nl.r, nl.nnz, 2.1, w);
-    mps_gradient_corrected(&nl, w, 2, 4.0, x, phi, NULL, NULL, g);
+    mps_gradient_corrected(&nl, POP_STORED(w), 2, 4.0, x, phi, NULL, NULL, g);
     /* middle particle: (2/4) (w(1) + w(1)) * 1 / 1 */
     double w1 = mps_kernel_zhang2014.w(1.0, 2.1);
     assert_true(fabs(g[3] - 0.5 * 2 * w1) < 1e-12);

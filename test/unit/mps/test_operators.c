@@ -7,6 +7,7 @@
 #include <stdint.h>
 #include <cmocka.h>
 #include <math.h>
+#include <omp.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -125,7 +126,7 @@ static void test_interior_operators(void **s)
             int n = l.n, c = l.centre;
             double *phi = malloc(sizeof *phi * n), *out = malloc(3 * sizeof *out * n);
             double *n_d = malloc(sizeof *n_d * n);
-            mps_number_density(&l.nl, l.w, NULL, NULL, n_d);
+            mps_number_density(&l.nl, POP_STORED(l.w), NULL, NULL, n_d);
             rel(n_d[c], L.n0, 1e-12);
             /* Laplacian of |r - r_c|^2 is 2d. */
             const double *xc = l.x + 3 * c;
@@ -135,19 +136,19 @@ static void test_interior_operators(void **s)
                     d2 += pow(l.x[3 * i + q] - xc[q], 2);
                 phi[i] = d2;
             }
-            mps_laplacian(&l.nl, l.w, dim, L.n0, L.lambda, 1, phi, NULL, NULL, out);
+            mps_laplacian(&l.nl, POP_STORED(l.w), dim, L.n0, L.lambda, 1, phi, NULL, NULL, out);
             rel(out[c], 2.0 * dim, 1e-12);
             /* Gradient of a linear field is exact. */
             const double a[3] = { 1.5, -2.0, dim == 3 ? 0.7 : 0 };
             for (int i = 0; i < n; i++)
                 phi[i] = 3.0 + a[0] * l.x[3*i] + a[1] * l.x[3*i+1] + a[2] * l.x[3*i+2];
-            mps_gradient(&l.nl, l.w, dim, L.n0, l.x, phi, NULL, NULL, out);
+            mps_gradient(&l.nl, POP_STORED(l.w), dim, L.n0, l.x, phi, NULL, NULL, out);
             for (int q = 0; q < dim; q++)
                 assert_true(fabs(out[3 * c + q] - a[q]) < 1e-9 * 2.0);
             /* Constant field: zero gradient, interior (E1-05). */
             for (int i = 0; i < n; i++)
                 phi[i] = 1000.0;
-            mps_gradient(&l.nl, l.w, dim, L.n0, l.x, phi, NULL, NULL, out);
+            mps_gradient(&l.nl, POP_STORED(l.w), dim, L.n0, l.x, phi, NULL, NULL, out);
             for (int q = 0; q < 3; q++)
                 assert_true(fabs(out[3 * c + q]) < 1e-9 * 1000.0 / dp);
             /* Divergence of u = (x, y, z) is d; of a rigid rotation, 0. */
@@ -155,15 +156,15 @@ static void test_interior_operators(void **s)
             for (int i = 0; i < n; i++)
                 for (int q = 0; q < 3; q++)
                     u[3 * i + q] = q < dim ? l.x[3 * i + q] : 0;
-            mps_divergence(&l.nl, l.w, dim, L.n0, l.x, u, NULL, NULL, out);
+            mps_divergence(&l.nl, POP_STORED(l.w), dim, L.n0, l.x, u, NULL, NULL, out);
             rel(out[c], dim, 1e-12);
             for (int i = 0; i < n; i++) {
                 u[3*i] = -l.x[3*i+1]; u[3*i+1] = l.x[3*i]; u[3*i+2] = 0;
             }
-            mps_divergence(&l.nl, l.w, dim, L.n0, l.x, u, NULL, NULL, out);
+            mps_divergence(&l.nl, POP_STORED(l.w), dim, L.n0, l.x, u, NULL, NULL, out);
             assert_true(fabs(out[c]) < 1e-12);
             /* Surface vector vanishes inside. */
-            mps_surface_vector(&l.nl, l.w, dim, L.n0, l.x, NULL, NULL, out);
+            mps_surface_vector(&l.nl, POP_STORED(l.w), dim, L.n0, l.x, NULL, NULL, out);
             assert_true(fabs(out[3*c]) + fabs(out[3*c+1]) + fabs(out[3*c+2]) < 1e-12);
             free(u); free(phi); free(out); free(n_d);
             lat_free(&l);
@@ -173,7 +174,9 @@ static void test_interior_operators(void **s)
 /* A list of the Laplacian's radius split at the gradient's (what the
  * solver does at 2.1 / 3.1 dp): the operators of the smaller radius give
  * the same values over the inner view as over whole rows, to round-off
- * (the zero weights are skipped, the order of the sum changes). */
+ * (the zero weights are skipped, the order of the sum changes); weights
+ * computed where they are read give the stored weights' results to the
+ * bit. */
 static void test_inner_view(void **s)
 {
     (void)s;
@@ -203,16 +206,32 @@ static void test_inner_view(void **s)
             u[3 * i + q] = cos(30 * x[3 * i + q] + q);
     }
     double *a = malloc(3 * sizeof *a * n), *b = malloc(3 * sizeof *b * n);
-    for (int op = 0; op < 4; op++) {
+    double *c = malloc(3 * sizeof *c * n);
+    /* the same weights computed row by row where read (weights.h), on a
+     * list that measures its distances again (neighbour.h measure_r):
+     * every operator's result is the stored weights' to the bit */
+    struct neighbour_list nm = { .r_inner = re, .measure_r = 1 };
+    assert_int_equal(neighbour_build(&nm, &g, x, rl), 0);
+    assert_true(nm.r == NULL && nm.nnz == nl.nnz);
+    const int64_t cap = nm.max_row;
+    double *buf = malloc(sizeof *buf * (size_t)(cap * omp_get_max_threads()));
+    const struct pop_weights Wc = { .fn = mps_kernel_zhang2014.weights,
+                                    .re = re, .buf = buf, .cap = cap };
+    for (int op = 0; op < 5; op++) {
         const struct neighbour_list *v[2] = { &nl, &in };
         double *o[2] = { a, b };
-        for (int k = 0; k < 2; k++)
+        for (int k = 0; k < 3; k++) {
+            const struct pop_weights *W = k < 2 ? POP_STORED(w) : &Wc;
+            const struct neighbour_list *L = k < 2 ? v[k] : &nm;
+            double *out = k < 2 ? o[k] : c;
             switch (op) {
-            case 0: mps_number_density(v[k], w, NULL, NULL, o[k]); break;
-            case 1: mps_gradient(v[k], w, dim, 1.0, x, phi, NULL, NULL, o[k]); break;
-            case 2: mps_divergence(v[k], w, dim, 1.0, x, u, NULL, NULL, o[k]); break;
-            default: mps_surface_vector(v[k], w, dim, 1.0, x, NULL, NULL, o[k]);
+            case 0: mps_number_density(L, W, NULL, NULL, out); break;
+            case 1: mps_gradient(L, W, dim, 1.0, x, phi, NULL, NULL, out); break;
+            case 2: mps_divergence(L, W, dim, 1.0, x, u, NULL, NULL, out); break;
+            case 3: mps_surface_vector(L, W, dim, 1.0, x, NULL, NULL, out); break;
+            default: mps_laplacian(L, W, dim, 1.0, 1.0, 3, u, NULL, NULL, out);
             }
+        }
         int m = op == 0 || op == 2 ? n : 3 * n;
         double big = 0, d = 0;
         for (int i = 0; i < m; i++) {
@@ -220,7 +239,10 @@ static void test_inner_view(void **s)
             d = fmax(d, fabs(a[i] - b[i]));
         }
         assert_true(big > 0 && d <= 1e-12 * big);
+        assert_memory_equal(a, c, sizeof *a * (size_t)m);
     }
+    free(buf); free(c);
+    neighbour_free(&nm);
     /* the view really is shorter: 2.1 of 3.1 dp keeps under 40 % */
     int64_t kept = 0;
     for (int i = 0; i < n; i++)
@@ -245,15 +267,15 @@ static void test_surface_particle(void **s)
     int n = l.n, c = l.centre;
     double *out = malloc(3 * sizeof *out * n), *nd = malloc(sizeof *nd * n);
     double *phi = malloc(sizeof *phi * n);
-    mps_surface_vector(&l.nl, l.w, 3, L.n0, l.x, NULL, NULL, out);
+    mps_surface_vector(&l.nl, POP_STORED(l.w), 3, L.n0, l.x, NULL, NULL, out);
     double F = sqrt(out[3*c]*out[3*c] + out[3*c+1]*out[3*c+1] + out[3*c+2]*out[3*c+2]);
     assert_true(fabs(F - 0.6324) < 1e-4);
     assert_true(out[3 * c + 2] < 0);
-    mps_number_density(&l.nl, l.w, NULL, NULL, nd);
+    mps_number_density(&l.nl, POP_STORED(l.w), NULL, NULL, nd);
     assert_true(fabs(nd[c] / L.n0 - 0.7219) < 1e-4);
     for (int i = 0; i < n; i++)
         phi[i] = 1.0;
-    mps_gradient(&l.nl, l.w, 3, L.n0, l.x, phi, NULL, NULL, out);
+    mps_gradient(&l.nl, POP_STORED(l.w), 3, L.n0, l.x, phi, NULL, NULL, out);
     assert_true(out[3 * c + 2] < 0);
     assert_true(fabs(out[3 * c]) < 1e-9 && fabs(out[3 * c + 1]) < 1e-9);
     print_message("constant-field gradient at a flat surface: %.4f p/dp "
@@ -275,12 +297,12 @@ static void test_inv_eps(void **s)
            *b = malloc(sizeof *b * n);
     for (int i = 0; i < n; i++)
         ie[i] = 1.0;
-    mps_number_density(&l.nl, l.w, NULL, NULL, a);
-    mps_number_density(&l.nl, l.w, ie, NULL, b);
+    mps_number_density(&l.nl, POP_STORED(l.w), NULL, NULL, a);
+    mps_number_density(&l.nl, POP_STORED(l.w), ie, NULL, b);
     assert_memory_equal(a, b, sizeof *a * n);
     for (int i = 0; i < n; i++)
         ie[i] = 2.0;
-    mps_number_density(&l.nl, l.w, ie, NULL, b);
+    mps_number_density(&l.nl, POP_STORED(l.w), ie, NULL, b);
     for (int i = 0; i < n; i++)
         rel(b[i], 2 * a[i], 1e-15);
     free(ie); free(a); free(b);

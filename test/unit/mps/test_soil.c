@@ -344,7 +344,7 @@ static void test_vp_system(void **s)
     size_t cap = 0;
     int64_t rp[NS + 1];
     A.rowptr = rp;
-    const int64_t nnz = pop_matrix_rowptr(&nl, N, w, unk, NS, rp);
+    const int64_t nnz = pop_matrix_rowptr(&nl, N, POP_STORED(w), unk, NS, rp);
     assert_int_equal(csr_reserve(&A, &cap, nnz), SIM_OK);
     A.n = NS;
     A.nnz = nnz;
