@@ -87,7 +87,13 @@ void mps_surface_pressure(struct mps_solver *s)
 {
     struct mps_particles *P = &s->P;
     const struct pop_weights Wn = mps_w(s, MPS_W_N), Wg = mps_w(s, MPS_W_G);
-#pragma omp parallel for schedule(static)
+    /* In index order, one particle after the other: a surface particle's
+     * fit reads the pressure of its surface neighbours, which this loop
+     * sets. Run in parallel, that read raced with the writes, and two runs
+     * of the same case on two threads differed (from the 5th step of the
+     * Kleefsman tank, test/cases/neighbourDistances.sh under load); in
+     * order, every thread count gives what one thread always gave. The
+     * surface particles are a few per cent of the fluid. */
     for (int i = 0; i < P->n; i++)
         if (P->type[i] == MPS_FLUID && P->fs[i] == MPS_SURFACE)
             P->p[i] = surface_value(s, &Wn, &Wg, i);

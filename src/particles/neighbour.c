@@ -11,12 +11,13 @@
  * cell-traversal order (z, then y, then x), so that on the same grid the
  * rows, and every sum over them, are those of a full 27-cell scan.
  *
- * Update: one pass over each thread's block of candidates counts those
- * within the cut-off; once the blocks' counts are known, a second pass
- * measures them again and writes them into place with their distances
- * (cheaper than storing a distance, or a copy of the kept indices, for
- * every candidate). The update goes by the build's blocks, so any thread
- * count reads the candidates where the build left them. */
+ * Update: one pass over each thread's block of candidates classes them
+ * (beyond the cut-off, within it, within the inner radius: one byte per
+ * candidate, where a copy of the kept indices took four) and counts the
+ * rows; once the blocks' counts are known, a second pass writes the kept
+ * ones into place, then their distances (only theirs). The update goes by
+ * the build's blocks, so any thread count reads the candidates where the
+ * build left them. */
 #include "particles/neighbour.h"
 
 #include <math.h>
@@ -209,6 +210,16 @@ static int build_candidates(struct neighbour_list *nl,
             nl->nnz_cand = acc;
             nl->nblk = nt;
             nl->blk_row[nt] = n;
+            if (!err && (size_t)acc > nl->cap_cls) {
+                size_t c = (size_t)acc + (size_t)acc / 8 + 64;
+                uint8_t *p = sim_realloc(nl->cls, c);
+                if (p) {
+                    nl->cls = p;
+                    nl->cap_cls = c;
+                } else {
+                    err = SIM_ERR_NOMEM;
+                }
+            }
         }
     }
     return err;
@@ -235,10 +246,11 @@ int neighbour_build(struct neighbour_list *nl, const struct cell_grid *g,
     return neighbour_build_skin(nl, g, x, rc, 0.0);
 }
 
-/* Pairs of rows [a, b) (block t) within rc2: counts into start[i], the
- * longest into *longest. */
+/* Class of each candidate of rows [a, b) (block t): 0 beyond rc2, 1
+ * within, 2 within ri2 (<= rc2) too; the rows' pairs within rc2 into
+ * start[i], the longest into *longest. */
 static int64_t count_block(struct neighbour_list *nl, const double *x,
-                           double rc2, int t, int64_t *longest)
+                           double rc2, double ri2, int t, int64_t *longest)
 {
     const int a = nl->blk_row[t], b = nl->blk_row[t + 1];
     const int32_t *cj = nl->buf[t];   /* from candidate cstart[a] on */
@@ -247,8 +259,12 @@ static int64_t count_block(struct neighbour_list *nl, const double *x,
     for (int i = a; i < b; i++) {
         const double *xi = x + 3 * i;
         int64_t len = 0;
-        for (int64_t k = nl->cstart[i]; k < nl->cstart[i + 1]; k++)
-            len += dist2(xi, x + 3 * cj[k - base]) < rc2;
+        for (int64_t k = nl->cstart[i]; k < nl->cstart[i + 1]; k++) {
+            double d2 = dist2(xi, x + 3 * cj[k - base]);
+            uint8_t c = (uint8_t)((d2 < rc2) + (d2 < ri2));
+            nl->cls[k] = c;
+            len += c != 0;
+        }
         nl->start[i] = len;
         tot += len;
         big = len > big ? len : big;
@@ -263,8 +279,8 @@ static int64_t count_block(struct neighbour_list *nl, const double *x,
  * the block's own slot past the entries, overwritten by the next one; the
  * blocks' slots TRASH entries apart, so that no two threads write one
  * cache line (that sharing made the update twice as slow). */
-static void write_block(struct neighbour_list *nl, const double *x,
-                        double rc2, double ri2, int t, int64_t off)
+static void write_block(struct neighbour_list *nl, const double *x, int t,
+                        int64_t off)
 {
     const int a = nl->blk_row[t], b = nl->blk_row[t + 1];
     const int32_t *cj = nl->buf[t];
@@ -277,21 +293,17 @@ static void write_block(struct neighbour_list *nl, const double *x,
         const double *xi = x + 3 * i;
         int64_t front = off, back = off + len - 1;
         for (int64_t k = nl->cstart[i]; k < nl->cstart[i + 1]; k++) {
-            int j = cj[k - base];
-            double d2 = dist2(xi, x + 3 * j);
-            int keep = d2 < rc2, in = d2 < ri2;
+            int j = cj[k - base], keep = nl->cls[k] != 0, in = nl->cls[k] == 2;
             int64_t pos = !keep ? trash : in ? front : back;
             front += keep & in;
             back -= keep & !in;
             nl->j[pos] = j;
-            if (r)
-                r[pos] = d2;
         }
-        /* the square roots of the kept pairs only, vectorised */
+        /* the distances of the kept pairs only (the formula of
+         * neighbour_row_r) */
         if (r)
-#pragma omp simd
             for (int64_t k = off; k < off + len; k++)
-                r[k] = sqrt(r[k]);
+                r[k] = sqrt(dist2(xi, x + 3 * (size_t)nl->j[k]));
         nl->mid[i] = front;
         off += len;
     }
@@ -317,7 +329,7 @@ int neighbour_update(struct neighbour_list *nl, const double *x)
 #pragma omp for schedule(static) reduction(max : longest)
         for (int t = 0; t < nb; t++) {
             int64_t big;
-            cnt[t] = count_block(nl, x, rc2, t, &big);
+            cnt[t] = count_block(nl, x, rc2, ri2, t, &big);
             longest = big > longest ? big : longest;
         }
 #pragma omp single
@@ -336,7 +348,7 @@ int neighbour_update(struct neighbour_list *nl, const double *x)
                 int64_t off = 0;
                 for (int u = 0; u < t; u++)
                     off += cnt[u];
-                write_block(nl, x, rc2, ri2, t, off);
+                write_block(nl, x, t, off);
             }
         }
     }
@@ -416,6 +428,7 @@ void neighbour_free(struct neighbour_list *nl)
     free(nl->j);
     free(nl->r);
     free(nl->xr);
+    free(nl->cls);
     free(nl->rbuf);
     free(nl->cstart);
     free(nl->mid);
