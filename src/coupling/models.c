@@ -105,8 +105,11 @@ int coupling_settings_read(const struct dict *d, struct coupling_settings *s)
         return dict_error(d, "conservativeReaction", SIM_ERR_DICT,
                           "conservativeReaction applies to model B only "
                           "(model A's reaction is already exact)");
-    /* 0 searches at every call, so a restart reproduces a continuous run
-     * bit for bit; a skin trades that for ~2x cheaper pair updates. */
+    /* 0 searches twice a step, so that a restart reproduces a continuous
+     * run bit for bit; a skin searches when the particles were renumbered
+     * or either cloud moved more than the skin (every few steps) and
+     * otherwise measures the kept pairs again, at the price of that
+     * bit-identity (couple_fluid_grain_fields). */
     TRY(dict_get_scalar_or(d, "pairSkin", 0.0, &s->skin));
     if (!(s->skin >= 0) || !isfinite(s->skin))
         return dict_error(d, "pairSkin", SIM_ERR_DICT,

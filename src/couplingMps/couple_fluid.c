@@ -161,17 +161,31 @@ static void check_order(struct couple_fluid *cf, const struct mps_particles *P)
     }
 }
 
-int couple_fluid_update(struct couple_fluid *cf, struct mps_solver *s)
+/* The grain-particle pairs at the current positions and particle order.
+ * pairSkin 0: a search at every call (twice a step), so that a restart,
+ * which starts from the positions alone, repeats the continuous run to the
+ * bit. pairSkin > 0: the list of the last search while the particle order
+ * is the same and both clouds moved less than the skin since (a search
+ * every few steps, when the MPS list renumbers), its pairs measured again
+ * in between, at the price of that bit-identity. */
+static int find_pairs(struct couple_fluid *cf, const struct mps_particles *P)
 {
-    struct mps_particles *P = &s->P;
-    double t0 = app_wall_time();
-    TRY(grow_particles(cf, P->cap > P->n ? P->cap : P->n));
     if (cf->cs.skin > 0)
         check_order(cf, P);
     int searched;
     TRY(coupling_pairs_update(&cf->pairs, cf->dim, cf->re,
                               cf->cs.skin * cf->dp, cf->ng, cf->xg, P->n,
                               P->x, &searched));
+    cf->searches += searched;
+    return SIM_OK;
+}
+
+int couple_fluid_update(struct couple_fluid *cf, struct mps_solver *s)
+{
+    struct mps_particles *P = &s->P;
+    double t0 = app_wall_time();
+    TRY(grow_particles(cf, P->cap > P->n ? P->cap : P->n));
+    TRY(find_pairs(cf, P));
     TRY(coupling_porosity(&cf->pairs, cf->Vg, cf->cs.eps_min, cf->eps,
                           P->inv_eps, &cf->n_clamped));
     /* Particles that hold phi_i dp^d of fluid (genParticles grainVolume
@@ -267,12 +281,9 @@ int couple_fluid_grain_fields(struct couple_fluid *cf, struct mps_solver *s)
 {
     struct mps_particles *P = &s->P;
     double t0 = app_wall_time();
-    /* The pair list must describe the current particle order: after a
-     * step (renumbered, moved) search again at the grain positions the
-     * porosity was computed for. */
-    coupling_pairs_invalidate(&cf->pairs);
-    TRY(coupling_pairs_update(&cf->pairs, cf->dim, cf->re, 0.0, cf->ng,
-                              cf->xg, P->n, P->x, NULL));
+    /* the step renumbered and moved the particles; the grains are where
+     * the porosity was computed for */
+    TRY(find_pairs(cf, P));
     /* eps^m at the current positions of both phases (A.10 step 2), not
      * the values the last step used (computed before the particles moved):
      * then a restart, which starts from the positions alone, repeats the

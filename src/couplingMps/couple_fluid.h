@@ -79,6 +79,7 @@ struct couple_fluid {
     int n_orphan;               /* grains whose reaction found no fluid  */
     int concurrent;             /* scheme concurrent (one-step lag)      */
     long exchanges;
+    long searches;              /* grain-particle pair searches          */
     double wall;                /* seconds spent here (not in the wait)  */
     double wait;                /* seconds waiting for the DEM side      */
 };

@@ -109,7 +109,7 @@ for dp in "${dps[@]}"; do
         wait $pf || { echo "dp $dp: mpsFluid failed: $(grep -A2 FATAL "$c/log.mpsFluid" | tr '\n' ' ')"; continue 2; }
         # MPS part: the step's own timers (per particle-step x particles);
         # DEM + coupling: (glue + waiting for demSolid) per exchange
-        run=$(awk '/^Coupling: [0-9]+ exchanges/ { n = $2; g = $4; d = $9 }
+        run=$(awk '/^Coupling: [0-9]+ exchanges/ { n = $2; g = $7; d = $12 }
                    /^    particles / { npart = $2 }
                    /^    PPE iterations/ { it = $(NF - 2); gsub(/[(]/, "", it) }
                    /time per particle-step \[us\]/ { tot = $NF; $1 = $2 = $3 = $4 = ""; brk = $0 }

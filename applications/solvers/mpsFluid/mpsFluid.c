@@ -515,9 +515,9 @@ static int couple_before(struct solver *sv)
 static void couple_finish(struct solver *sv)
 {
     const struct fluid *f = (const struct fluid *)sv;
-    log_info("Coupling: %ld exchanges, %.3g s in the glue, %.3g s "
-             "waiting for demSolid", f->cf.exchanges, f->cf.wall,
-             f->cf.wait);
+    log_info("Coupling: %ld exchanges, %ld pair searches, %.3g s in the "
+             "glue, %.3g s waiting for demSolid", f->cf.exchanges,
+             f->cf.searches, f->cf.wall, f->cf.wait);
 }
 
 static void couple_close(struct solver *sv, int rc)
