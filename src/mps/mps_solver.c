@@ -2,7 +2,6 @@
  * operator radius, the box, work storage, wall/dummy partners) and the
  * neighbour phase of a step. */
 #include <math.h>
-#include <omp.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -283,24 +282,6 @@ static int grow_weights(struct mps_solver *s)
     return SIM_OK;
 }
 
-/* Room for the longest row of the list, per radius and thread. */
-static int grow_rows(struct mps_solver *s)
-{
-    int nth = omp_get_max_threads();
-    int64_t want = s->nl.max_row + 1;
-    if (want <= s->cap_wrow && nth <= s->wrow_threads)
-        return SIM_OK;
-    int64_t c = want > s->cap_wrow ? want + want / 4 : s->cap_wrow;
-    int t = nth > s->wrow_threads ? nth : s->wrow_threads;
-    double *b = sim_realloc(s->wrow, 3 * (size_t)t * (size_t)c * sizeof *b);
-    if (!b)
-        return SIM_ERR_NOMEM;
-    s->wrow = b;
-    s->cap_wrow = c;
-    s->wrow_threads = t;
-    return SIM_OK;
-}
-
 static double radius(const struct mps_solver *s, enum mps_radius which)
 {
     const struct mps_settings *S = &s->S;
@@ -485,7 +466,9 @@ int mps_neighbours(struct mps_solver *s)
 
 int mps_weights(struct mps_solver *s)
 {
-    TRY(grow_rows(s));
+    /* room for the longest row of the list, per radius and thread */
+    TRY(neighbour_grow_rows(&s->nl, 3, &s->wrow, &s->cap_wrow,
+                            &s->wrow_threads));
     if (!s->soil)
         return SIM_OK;
     TRY(grow_weights(s));

@@ -29,8 +29,8 @@
 #include "particles/cells.h"
 
 
-/* Entries between two blocks' slots for the candidates beyond rc: two
- * cache lines of distances. */
+/* Entries between two blocks' slots for the candidates beyond rc: a
+ * cache line of indices. */
 #define TRASH 16
 
 static int reserve_rows(struct neighbour_list *nl, int n)
@@ -86,18 +86,26 @@ static int keep_positions(struct neighbour_list *nl, const double *x)
         nl->cap_xr = c;
     }
     memcpy(nl->xr, x, n3 * sizeof *x);
-    int nth = omp_get_max_threads();
-    if (nl->max_row + 1 > nl->cap_rbuf || nth > nl->rbuf_threads) {
-        int64_t want = nl->max_row + 1;
-        int64_t c = want > nl->cap_rbuf ? want + want / 4 : nl->cap_rbuf;
-        int t = nth > nl->rbuf_threads ? nth : nl->rbuf_threads;
-        double *b = sim_realloc(nl->rbuf, (size_t)t * (size_t)c * sizeof *b);
-        if (!b)
-            return SIM_ERR_NOMEM;
-        nl->rbuf = b;
-        nl->cap_rbuf = c;
-        nl->rbuf_threads = t;
-    }
+    return neighbour_grow_rows(nl, 1, &nl->rbuf, &nl->cap_rbuf,
+                               &nl->rbuf_threads);
+}
+
+int neighbour_grow_rows(const struct neighbour_list *nl, int nbuf,
+                        double **buf, int64_t *cap, int *threads)
+{
+    const int nth = omp_get_max_threads();
+    const int64_t want = nl->max_row + 1;
+    if (want <= *cap && nth <= *threads)
+        return SIM_OK;
+    int64_t c = want > *cap ? want + want / 4 : *cap;
+    int t = nth > *threads ? nth : *threads;
+    double *b = sim_realloc(*buf, (size_t)nbuf * (size_t)t * (size_t)c
+                                  * sizeof *b);
+    if (!b)
+        return SIM_ERR_NOMEM;
+    *buf = b;
+    *cap = c;
+    *threads = t;
     return SIM_OK;
 }
 
@@ -322,8 +330,9 @@ int neighbour_update(struct neighbour_list *nl, const double *x)
     int64_t longest = 0;
     /* by the build's blocks, whose candidates are in their buffers: one
      * block per thread when the thread count is the build's; two passes
-     * over the candidates (count, write) instead of a copy of the kept
-     * ones: a scratch as large as the candidates set the peak memory */
+     * over the candidates (class and count, write) with a byte per
+     * candidate: a copy of the kept indices (4 bytes per candidate) set
+     * mpsFluid's peak memory */
 #pragma omp parallel
     {
 #pragma omp for schedule(static) reduction(max : longest)

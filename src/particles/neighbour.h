@@ -137,6 +137,12 @@ int neighbour_update(struct neighbour_list *nl, const double *x);
 int neighbour_build_brute(struct neighbour_list *nl, int dim, const double *x,
                           int n, double rc);
 
+/* Room in *buf for nbuf x *threads rows of *cap doubles: *cap above the
+ * list's longest row, *threads at least omp_get_max_threads() (per-thread
+ * rows of the operators: neighbour_row_r, particles/operators/weights.h). */
+int neighbour_grow_rows(const struct neighbour_list *nl, int nbuf,
+                        double **buf, int64_t *cap, int *threads);
+
 void neighbour_free(struct neighbour_list *nl);
 
 #endif

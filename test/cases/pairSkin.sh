@@ -16,15 +16,7 @@ NAME=pairSkin
 make_case()   # DIR SKIN
 {
     local c="$1"
-    case_2d "$c" <<'EOD'
-regions
-(
-    tank   { type tankWall; shape box; min (0 0 0); max (0.05 0.15 0); open (ymax); }
-    water  { type fluid; shape box; min (0 0 0); max (0.05 0.1 0); hydrostaticPressure yes; }
-    beads  { type grains; shape box; min (0.0025 0.0105 0); max (0.0475 0.0405 0);
-             diameter 0.005; lattice cubic; spacing 0.01; }
-);
-EOD
+    case_beads_2d "$c"
     cat > "$c/system/controlDict" <<'EOD'
 FoamFile { version 2.0; format ascii; class dictionary; object controlDict; }
 startFrom startTime; startTime 0; endTime 0.2; deltaT 4e-4; adjustTimeStep no;

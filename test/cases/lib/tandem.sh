@@ -46,3 +46,19 @@ case_2d()
           "dimension    2;" "dp           0.005;" "kernelRadius 3.1;" "wallLayers   auto;"
       cat; } > "$c/system/particleDict"
 }
+
+# case_beads_2d DIR: case_2d with the quick 2-D sedimentation set-up: a
+# 0.05 x 0.15 m tank, water to 0.1 m, 15 beads of 5 mm on a 1 cm lattice
+# above its floor (no controlDict: the test writes its own).
+case_beads_2d()
+{
+    case_2d "$1" <<'EOD'
+regions
+(
+    tank   { type tankWall; shape box; min (0 0 0); max (0.05 0.15 0); open (ymax); }
+    water  { type fluid; shape box; min (0 0 0); max (0.05 0.1 0); hydrostaticPressure yes; }
+    beads  { type grains; shape box; min (0.0025 0.0105 0); max (0.0475 0.0405 0);
+             diameter 0.005; lattice cubic; spacing 0.01; }
+);
+EOD
+}
