@@ -38,6 +38,9 @@
 #define CHAN_PAGE 4096
 #define CHAN_SPIN 2000          /* pause iterations before sleeping      */
 #define CHAN_SLICE_NS 50000000L /* longest single futex sleep [ns]        */
+#define CHAN_AWAY_NS 1000000000L /* a gap between two looks at the channel
+                                   longer than this: we were stopped or
+                                   not scheduled, not waiting [ns]      */
 #define CHAN_FRAME_HDR 64       /* slot bytes before the payload          */
 #define CHAN_MAX_SLOTS 1024     /* frames in flight per ring, at most     */
 

@@ -214,7 +214,13 @@ int chan_wait(struct channel *c, int (*ready)(struct channel *, void *),
         else
             cpu_relax();
     }
-    uint64_t t0 = chan_now_ns(), limit = (uint64_t)(timeout * 1e9);
+    /* The time-out counts the time we waited: a gap between two looks far
+     * longer than one sleep means this process was stopped (Ctrl-Z and fg
+     * of the tandem, a debugger) or not scheduled (a niced run on a busy
+     * machine), and does not count. Before, a tandem stopped for longer
+     * than the time-out (600 s in the tutorials) stopped with "no frame
+     * within 600 s" as soon as it was continued (2026-11-28). */
+    uint64_t t0 = chan_now_ns(), last = t0, limit = (uint64_t)(timeout * 1e9);
     for (;;) {
         if (waiting)
             atomic_store(waiting, 1);
@@ -229,7 +235,11 @@ int chan_wait(struct channel *c, int (*ready)(struct channel *, void *),
         if (ready(c, arg))
             return SIM_OK;
         TRY(chan_check_peer(c));
-        if (chan_now_ns() - t0 >= limit)
+        uint64_t now = chan_now_ns();
+        if (now - last > (uint64_t)CHAN_AWAY_NS)
+            t0 += now - last - (uint64_t)CHAN_SLICE_NS;
+        last = now;
+        if (now - t0 >= limit)
             return sim_error(SIM_ERR_TIMEOUT, "%s: no %s within %g s "
                              "(timeout in system/couplingDict)",
                              c->set.program, what, timeout);

@@ -11,13 +11,17 @@
  * cell-traversal order (z, then y, then x), so that on the same grid the
  * rows, and every sum over them, are those of a full 27-cell scan.
  *
- * Update: one pass over each thread's block of candidates classes them
- * (beyond the cut-off, within it, within the inner radius: one byte per
- * candidate, where a copy of the kept indices took four) and counts the
- * rows; once the blocks' counts are known, a second pass writes the kept
- * ones into place, then their distances (only theirs). The update goes by
- * the build's blocks, so any thread count reads the candidates where the
- * build left them. */
+ * Update: one pass over each thread's block of candidates keeps the
+ * indices of those within the cut-off in a scratch laid out like the
+ * candidates; once the blocks' counts are known, a second pass writes them
+ * into place with their distances (recomputed: cheaper than storing them
+ * for every candidate). With measure_r (the lean list) the first pass
+ * stores a class per candidate instead (beyond the cut-off, within it,
+ * within the inner radius: one byte where an index takes four) and the
+ * second writes the kept indices from it; that costs 20-40 % more update
+ * time (a pass over every candidate again) for 3 bytes per candidate.
+ * The update goes by the build's blocks, so any thread count reads the
+ * candidates where the build left them. */
 #include "particles/neighbour.h"
 
 #include <math.h>
@@ -140,6 +144,26 @@ static int reserve_buffers(struct neighbour_list *nl, int nth)
 
 #define dist2 neighbour_dist2
 
+/* The update's scratch for acc candidates: the kept indices (4 bytes per
+ * candidate), or with measure_r their classes (1 byte). */
+static int reserve_scratch(struct neighbour_list *nl, int64_t acc)
+{
+    size_t c = (size_t)acc + (size_t)acc / 8 + 64;
+    if (nl->measure_r) {
+        if ((size_t)acc > nl->cap_cls) {
+            SIM_GROW(nl->cls, c);
+            nl->cap_cls = c;
+        }
+        free(nl->sj);
+        nl->sj = NULL;
+        nl->cap_sj = 0;
+    } else if ((size_t)acc > nl->cap_sj) {
+        SIM_GROW(nl->sj, c);
+        nl->cap_sj = c;
+    }
+    return SIM_OK;
+}
+
 /* Candidates of particle i into out (room for every particle of the runs
  * is guaranteed by the caller); returns how many. */
 static int64_t scan(const struct cell_grid *g, const double *x, int i,
@@ -218,16 +242,8 @@ static int build_candidates(struct neighbour_list *nl,
             nl->nnz_cand = acc;
             nl->nblk = nt;
             nl->blk_row[nt] = n;
-            if (!err && (size_t)acc > nl->cap_cls) {
-                size_t c = (size_t)acc + (size_t)acc / 8 + 64;
-                uint8_t *p = sim_realloc(nl->cls, c);
-                if (p) {
-                    nl->cls = p;
-                    nl->cap_cls = c;
-                } else {
-                    err = SIM_ERR_NOMEM;
-                }
-            }
+            if (!err)
+                err = reserve_scratch(nl, acc);
         }
     }
     return err;
@@ -254,11 +270,15 @@ int neighbour_build(struct neighbour_list *nl, const struct cell_grid *g,
     return neighbour_build_skin(nl, g, x, rc, 0.0);
 }
 
-/* Class of each candidate of rows [a, b) (block t): 0 beyond rc2, 1
- * within, 2 within ri2 (<= rc2) too; the rows' pairs within rc2 into
- * start[i], the longest into *longest. */
-static int64_t count_block(struct neighbour_list *nl, const double *x,
-                           double rc2, double ri2, int t, int64_t *longest)
+/* Fast update (distances stored). Candidates of rows [a, b) (block t)
+ * within rc2: their indices into the scratch at the candidate offsets,
+ * counts into start[i], the longest into *longest. Branch-free (about half
+ * the candidates are kept, in no predictable pattern); the store one past
+ * a full row lands in the next row's first slot, rewritten afterwards,
+ * except past the block's last row, which another thread owns: that row
+ * takes the branch. */
+static int64_t select_block(struct neighbour_list *nl, const double *x,
+                            double rc2, int t, int64_t *longest)
 {
     const int a = nl->blk_row[t], b = nl->blk_row[t + 1];
     const int32_t *cj = nl->buf[t];   /* from candidate cstart[a] on */
@@ -266,11 +286,74 @@ static int64_t count_block(struct neighbour_list *nl, const double *x,
     int64_t tot = 0, big = 0;
     for (int i = a; i < b; i++) {
         const double *xi = x + 3 * i;
+        int64_t k0 = nl->cstart[i], k1 = nl->cstart[i + 1], pos = k0;
+        if (i < b - 1) {
+            for (int64_t k = k0; k < k1; k++) {
+                int j = cj[k - base];
+                nl->sj[pos] = j;
+                pos += dist2(xi, x + 3 * j) < rc2;
+            }
+        } else {
+            for (int64_t k = k0; k < k1; k++) {
+                int j = cj[k - base];
+                if (dist2(xi, x + 3 * j) < rc2)
+                    nl->sj[pos++] = j;
+            }
+        }
+        nl->start[i] = pos - k0;
+        tot += pos - k0;
+        big = pos - k0 > big ? pos - k0 : big;
+    }
+    *longest = big;
+    return tot;
+}
+
+/* Rows of block t into place from entry off, from the kept indices: the
+ * pairs within r_inner from the front, the others from the back (without
+ * a branch: which it is does not follow a pattern), with their distances. */
+static void write_kept(struct neighbour_list *nl, const double *x,
+                       double ri2, int t, int64_t off)
+{
+    for (int i = nl->blk_row[t]; i < nl->blk_row[t + 1]; i++) {
+        int64_t len = nl->start[i], k0 = nl->cstart[i];
+        nl->start[i] = off;
+        const double *xi = x + 3 * i;
+        int64_t front = off, back = off + len - 1;
+        for (int64_t m = 0; m < len; m++) {
+            int j = nl->sj[k0 + m];
+            double d2 = dist2(xi, x + 3 * j);
+            int in = d2 < ri2;
+            int64_t pos = in ? front : back;
+            front += in;
+            back -= !in;
+            nl->j[pos] = j;
+            nl->r[pos] = sqrt(d2);
+        }
+        nl->mid[i] = front;
+        off += len;
+    }
+}
+
+/* Lean update (measure_r). Class of each candidate of rows [a, b) (block t): 0 beyond rc2, 1
+ * within, 2 within ri2 (<= rc2) too; the rows' pairs within rc2 into
+ * start[i], the longest into *longest. */
+static int64_t count_block(struct neighbour_list *nl, const double *x,
+                           double rc2, double ri2, int t, int64_t *longest)
+{
+    const int a = nl->blk_row[t], b = nl->blk_row[t + 1];
+    /* local pointers: stores through nl's would make every load of them
+     * again (aliasing) */
+    const int32_t *restrict cj = nl->buf[t] - nl->cstart[a];
+    const int64_t *restrict cs = nl->cstart;
+    uint8_t *restrict cls = nl->cls;
+    int64_t tot = 0, big = 0;
+    for (int i = a; i < b; i++) {
+        const double *xi = x + 3 * i;
         int64_t len = 0;
-        for (int64_t k = nl->cstart[i]; k < nl->cstart[i + 1]; k++) {
-            double d2 = dist2(xi, x + 3 * cj[k - base]);
+        for (int64_t k = cs[i]; k < cs[i + 1]; k++) {
+            double d2 = dist2(xi, x + 3 * cj[k]);
             uint8_t c = (uint8_t)((d2 < rc2) + (d2 < ri2));
-            nl->cls[k] = c;
+            cls[k] = c;
             len += c != 0;
         }
         nl->start[i] = len;
@@ -287,31 +370,25 @@ static int64_t count_block(struct neighbour_list *nl, const double *x,
  * the block's own slot past the entries, overwritten by the next one; the
  * blocks' slots TRASH entries apart, so that no two threads write one
  * cache line (that sharing made the update twice as slow). */
-static void write_block(struct neighbour_list *nl, const double *x, int t,
-                        int64_t off)
+static void write_block(struct neighbour_list *nl, int t, int64_t off)
 {
     const int a = nl->blk_row[t], b = nl->blk_row[t + 1];
-    const int32_t *cj = nl->buf[t];
-    const int64_t base = nl->cstart[a];
+    const int32_t *restrict cj = nl->buf[t] - nl->cstart[a];
+    const int64_t *restrict cs = nl->cstart;
+    const uint8_t *restrict cls = nl->cls;
+    int32_t *restrict jj = nl->j;
     const int64_t trash = (int64_t)nl->cap_nnz - TRASH * (t + 1);
-    double *r = nl->r;
     for (int i = a; i < b; i++) {
         int64_t len = nl->start[i];
         nl->start[i] = off;
-        const double *xi = x + 3 * i;
         int64_t front = off, back = off + len - 1;
-        for (int64_t k = nl->cstart[i]; k < nl->cstart[i + 1]; k++) {
-            int j = cj[k - base], keep = nl->cls[k] != 0, in = nl->cls[k] == 2;
+        for (int64_t k = cs[i]; k < cs[i + 1]; k++) {
+            int keep = cls[k] != 0, in = cls[k] == 2;
             int64_t pos = !keep ? trash : in ? front : back;
             front += keep & in;
             back -= keep & !in;
-            nl->j[pos] = j;
+            jj[pos] = cj[k];
         }
-        /* the distances of the kept pairs only (the formula of
-         * neighbour_row_r) */
-        if (r)
-            for (int64_t k = off; k < off + len; k++)
-                r[k] = sqrt(dist2(xi, x + 3 * (size_t)nl->j[k]));
         nl->mid[i] = front;
         off += len;
     }
@@ -329,16 +406,14 @@ int neighbour_update(struct neighbour_list *nl, const double *x)
     int err = SIM_OK;
     int64_t longest = 0;
     /* by the build's blocks, whose candidates are in their buffers: one
-     * block per thread when the thread count is the build's; two passes
-     * over the candidates (class and count, write) with a byte per
-     * candidate: a copy of the kept indices (4 bytes per candidate) set
-     * mpsFluid's peak memory */
+     * block per thread when the thread count is the build's */
 #pragma omp parallel
     {
 #pragma omp for schedule(static) reduction(max : longest)
         for (int t = 0; t < nb; t++) {
             int64_t big;
-            cnt[t] = count_block(nl, x, rc2, ri2, t, &big);
+            cnt[t] = nl->measure_r ? count_block(nl, x, rc2, ri2, t, &big)
+                                   : select_block(nl, x, rc2, t, &big);
             longest = big > longest ? big : longest;
         }
 #pragma omp single
@@ -357,7 +432,10 @@ int neighbour_update(struct neighbour_list *nl, const double *x)
                 int64_t off = 0;
                 for (int u = 0; u < t; u++)
                     off += cnt[u];
-                write_block(nl, x, t, off);
+                if (nl->measure_r)
+                    write_block(nl, t, off);
+                else
+                    write_kept(nl, x, ri2, t, off);
             }
         }
     }
@@ -438,6 +516,7 @@ void neighbour_free(struct neighbour_list *nl)
     free(nl->r);
     free(nl->xr);
     free(nl->cls);
+    free(nl->sj);
     free(nl->rbuf);
     free(nl->cstart);
     free(nl->mid);

@@ -46,7 +46,9 @@ struct neighbour_list {
     int64_t nnz_cand; /* candidate pairs; nnz <= nnz_cand               */
     int64_t *cstart;  /* n+1: row i's candidates are [cstart[i],
                          cstart[i+1]), held by the buffer of its block  */
-    uint8_t *cls;     /* cap_cls: class of each candidate (update)      */
+    int32_t *sj;      /* cap_sj: kept candidates (update scratch), or   */
+    size_t cap_sj;
+    uint8_t *cls;     /* cap_cls: with measure_r, their classes         */
     size_t cap_cls;
     int nblk;         /* blocks of rows of the last build (its threads) */
     int *blk_row;     /* nblk+1: first row of each block                */

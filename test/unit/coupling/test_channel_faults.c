@@ -167,7 +167,7 @@ static void test_second_signal_unlinks_and_kills(void **state)
 
 struct peer { const char *name; int side; double sleep; int action; };
 enum { OPEN_THEN_KILL, OPEN_THEN_STOP, OPEN_THEN_EXIT, OPEN_SEND_WAIT,
-       OPEN_THEN_CLOSE, OPEN_COMPUTE_SILENT };
+       OPEN_THEN_CLOSE, OPEN_COMPUTE_SILENT, OPEN_SUSPEND_OTHER };
 
 static int peer_main(void *arg)
 {
@@ -202,6 +202,18 @@ static int peer_main(void *arg)
     case OPEN_THEN_CLOSE:
         sleep_s(p->sleep);
         break;
+    case OPEN_SUSPEND_OTHER:
+        /* stop the other program (waiting for our frame) for longer than
+         * its time-out, continue it, then send: Ctrl-Z and fg */
+        sleep_s(0.2);             /* the other is waiting by then */
+        kill(getppid(), SIGSTOP);
+        sleep_s(p->sleep);
+        kill(getppid(), SIGCONT);
+        sleep_s(0.1);             /* it looks again before the frame */
+        if (channel_send(c, &f, &x))
+            return 4;
+        return channel_recv(c, &f, &data) == SIM_ERR_PEER &&
+               channel_close(c, SIM_ERR_PEER) == SIM_OK ? 0 : 5;
     case OPEN_COMPUTE_SILENT: {
         /* a starved program: no heartbeat (as when the scheduler gives a
          * niced run no CPU for seconds), but running, then it sends */
@@ -312,6 +324,31 @@ static void test_peer_starved_not_hung(void **state)
     double t0 = now_s();
     assert_int_equal(channel_recv(c, &f, &data), SIM_OK);
     assert_true(now_s() - t0 > 2.5);
+    assert_int_equal(channel_recv_done(c), SIM_OK);
+    assert_int_equal(channel_close(c, SIM_ERR_PEER), SIM_OK);
+    assert_int_equal(reap(pid), 0);
+}
+
+/* A wait stopped (SIGSTOP, as Ctrl-Z) for longer than its time-out goes
+ * on when continued: the stopped time is not waiting time. */
+static void test_suspended_wait_goes_on(void **state)
+{
+    char name[64];
+    struct channel_settings s;
+    struct channel_frame f;
+    struct channel *c;
+    const void *data;
+    pid_t pid;
+    (void)state;
+    unique_name(name, sizeof name);
+    struct peer p = { name, CHANNEL_SOLID, 1.5, OPEN_SUSPEND_OTHER };
+    pid = spawn(peer_main, &p);
+    test_settings(&s, CHANNEL_FLUID, name);
+    s.timeout = 0.5;
+    assert_int_equal(channel_open(&s, &c), SIM_OK);
+    double t0 = now_s();
+    assert_int_equal(channel_recv(c, &f, &data), SIM_OK);
+    assert_true(now_s() - t0 > 1.5);
     assert_int_equal(channel_recv_done(c), SIM_OK);
     assert_int_equal(channel_close(c, SIM_ERR_PEER), SIM_OK);
     assert_int_equal(reap(pid), 0);
@@ -496,6 +533,7 @@ int main(void)
         cmocka_unit_test(test_peer_killed_while_sending),
         cmocka_unit_test(test_peer_stopped_is_hung),
         cmocka_unit_test(test_peer_starved_not_hung),
+        cmocka_unit_test(test_suspended_wait_goes_on),
         cmocka_unit_test(test_peer_exit_without_close),
         cmocka_unit_test(test_timeout_on_live_silent_peer),
         cmocka_unit_test(test_stale_segment_replaced),
