@@ -13,7 +13,7 @@
 # must give the same sums per thread as with stored distances).
 #   - every .vtu and function-object file byte-identical (cmp);
 #   - peak memory of `measured` below `stored` (measured 2026-11-28 at
-#     dp 0.025 m: 1.34 against 1.78 kB per particle).
+#     dp 0.025 m: 1.40 against 2.12 kB per particle).
 NAME=neighbourDistances; . "$(dirname "$0")/lib/case.sh"
 need_bins genParticles mpsFluid dictTool
 export OMP_NUM_THREADS=2
