@@ -296,8 +296,7 @@ int couple_fluid_grain_fields(struct couple_fluid *cf, struct mps_solver *s)
     /* Model A: consistent gradient (A0-14) on the solver's last list; its
      * weights are one step old (positions moved by dt u), and before the
      * first step there is no list: then no gradient is sent. */
-    if (cf->cs.model == COUPLING_MODEL_A && s->nl.start && s->nl.n == P->n
-        && s->wrow) {
+    if (cf->cs.model == COUPLING_MODEL_A && s->nl.start && s->nl.n == P->n) {
         const struct pop_weights Wg = mps_w(s, MPS_W_G);
         coupling_gradient_consistent(&s->nl, &Wg,
                                      cf->dim, s->Lg.n0, P->x, P->p,

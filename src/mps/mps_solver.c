@@ -294,7 +294,7 @@ struct pop_weights mps_w(const struct mps_solver *s, enum mps_radius which)
     const double *w = which == MPS_W_N ? s->w_n
                     : which == MPS_W_G ? s->w_g : s->w_l;
     if (w)
-        return *POP_STORED(w);
+        return (struct pop_weights){ .w = w };
     return (struct pop_weights){
         .fn = s->S.kernel->weights, .re = radius(s, which),
         .buf = s->wrow + (size_t)which * s->wrow_threads * s->cap_wrow,

@@ -81,14 +81,8 @@ static int keep_positions(struct neighbour_list *nl, const double *x)
 {
     if (!nl->measure_r)
         return SIM_OK;
-    free(nl->r);          /* a list that stored distances before */
-    nl->r = NULL;
     const size_t n3 = 3 * (size_t)nl->n;
-    if (n3 > nl->cap_xr) {
-        size_t c = n3 + n3 / 8 + 3;
-        SIM_GROW(nl->xr, c);
-        nl->cap_xr = c;
-    }
+    TRY(sim_reserve((void **)&nl->xr, &nl->cap_xr, n3, sizeof *nl->xr));
     memcpy(nl->xr, x, n3 * sizeof *x);
     return neighbour_grow_rows(nl, 1, &nl->rbuf, &nl->cap_rbuf,
                                &nl->rbuf_threads);
@@ -154,9 +148,6 @@ static int reserve_scratch(struct neighbour_list *nl, int64_t acc)
             SIM_GROW(nl->cls, c);
             nl->cap_cls = c;
         }
-        free(nl->sj);
-        nl->sj = NULL;
-        nl->cap_sj = 0;
     } else if ((size_t)acc > nl->cap_sj) {
         SIM_GROW(nl->sj, c);
         nl->cap_sj = c;
@@ -334,9 +325,9 @@ static void write_kept(struct neighbour_list *nl, const double *x,
     }
 }
 
-/* Lean update (measure_r). Class of each candidate of rows [a, b) (block t): 0 beyond rc2, 1
- * within, 2 within ri2 (<= rc2) too; the rows' pairs within rc2 into
- * start[i], the longest into *longest. */
+/* Lean update (measure_r). Class of each candidate of rows [a, b) (block
+ * t): 0 beyond rc2, 1 within, 2 within ri2 (<= rc2) too; the rows' pairs
+ * within rc2 into start[i], the longest into *longest. */
 static int64_t count_block(struct neighbour_list *nl, const double *x,
                            double rc2, double ri2, int t, int64_t *longest)
 {

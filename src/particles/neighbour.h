@@ -71,12 +71,12 @@ struct neighbour_list {
     /* NULL for a list; in a view made by neighbour_inner() the end of
      * each row, which operators read through neighbour_row_end(). */
     const int64_t *end;
-    /* With measure_r set before a build, no distances are stored (r is
-     * NULL): neighbour_row_r() measures a row's again from a copy of the
-     * positions of the last build or update, bit for bit the values the
-     * list would have stored (mpsFluid: 8 bytes less per pair, about a
-     * fifth of its peak memory in 3-D). neighbour_build_brute() always
-     * stores them. */
+    /* With measure_r set before the first build (and kept), no distances
+     * are stored (r is NULL): neighbour_row_r() measures a row's again
+     * from a copy of the positions of the last build or update, bit for
+     * bit the values the list would have stored (mpsFluid: 8 bytes less
+     * per pair, about a fifth of its peak memory in 3-D).
+     * neighbour_build_brute() always stores them. */
     int measure_r;
     double *xr;       /* 3n: positions of the last build/update          */
     size_t cap_xr;
