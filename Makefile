@@ -33,15 +33,18 @@ EXTLIBS := -Wl,--as-needed $(shell pkg-config --libs libxml-2.0 2>/dev/null) \
            -lpthread -lm
 TESTLIBS := $(shell pkg-config --libs cmocka 2>/dev/null)
 
-# Optional hypre BoomerAMG-PCG back-end of src/linsolve (`solver hypre;`):
-# Debian's hypre is an MPI build, so everything is compiled with mpicc into
-# separate directories (build-hypre/, bin-hypre/).  make HYPRE=1
-HYPRE ?= 0
+# The MPI build: distributed runs (`mpirun -np N mpsFluid -parallel`,
+# doc/design.md §8) and hypre, whose Debian build is an MPI one (`solver
+# hypre;`, and every PPE of a distributed run). Everything is compiled with
+# mpicc into separate directories (build-hypre/, bin-hypre/).
+#   make MPI=1        (the same as make HYPRE=1)
+MPI ?= 0
+HYPRE ?= $(MPI)
 ifeq ($(HYPRE),1)
 BUILD   := $(BUILD)-hypre
 BINDIR  := $(BINDIR)-hypre
 CC      := mpicc
-CFLAGS  += -DMPSDEM_HAVE_HYPRE -I/usr/include/hypre
+CFLAGS  += -DMPSDEM_HAVE_HYPRE -DMPSDEM_HAVE_MPI -I/usr/include/hypre
 EXTLIBS += -lHYPRE
 endif
 

@@ -63,4 +63,15 @@ int  linsolve_create_named(const char *solver, const char *precond, double tol, 
 int  linsolve_solve(struct linsolve *s, const struct csr_matrix *A, const double *b, double *x, struct linsolve_stats *st);
 void linsolve_free(struct linsolve *s);
 
+#ifdef MPSDEM_HAVE_MPI
+#include <mpi.h>
+/* A distributed system (MPI builds, linsolve_dist.c): this rank's rows
+ * [row0, row0 + A->n) of nglobal, columns global; the solver and
+ * preconditioner of s map onto hypre's. Collective over comm. */
+int linsolve_solve_dist(struct linsolve *s, MPI_Comm comm,
+                        const struct csr_matrix *A, int64_t row0,
+                        int64_t nglobal, const double *b, double *x,
+                        struct linsolve_stats *st);
+#endif
+
 #endif

@@ -42,6 +42,7 @@
 #include "particles/motion/motion.h"
 #include "mps/operators.h"
 #include "particles/cells.h"
+#include "particles/halo.h"
 #include "particles/neighbour.h"
 #include "particles/store.h"
 
@@ -214,6 +215,11 @@ struct mps_solver {
     struct linsolve_stats last;
     struct mps_timers t;
     struct mps_soil *soil;          /* NULL without soil (soil.c)        */
+    /* A distributed run (mps_halo.c): NULL in one process. */
+    struct pop_halo *halo;
+    int64_t *gunk;                  /* particle -> global unknown or -1  */
+    int32_t *gcol;                  /* local unknown -> global           */
+    int cap_work;                   /* particles the work arrays hold    */
 };
 
 /* Take ownership of the particles in P (arrays allocated with capacity
@@ -267,6 +273,18 @@ struct dict;
 int mps_settings_read(const struct dict *transport, const struct dict *g,
                       const struct dict *schemes, const struct dict *solution,
                       struct mps_settings *S);
+
+/* Make s one rank's part of a distributed run (particles/halo.h; the
+ * caller split the cloud, s->P holds the own particles and the ghosts):
+ * the steps then exchange what the neighbours' rows read, and the PPE is
+ * solved over the ranks by h->ops->solve. Refused (SIM_ERR_INPUT, naming
+ * the setting) for what does not run distributed yet: soil, removed
+ * wall patches, shifting, extrapolated surface or dummy pressure, the
+ * coupling hooks. Renumbering is off (the owned particles stay first). */
+int mps_distribute(struct mps_solver *s, struct pop_halo *h);
+
+/* The particles this process owns: [0, mps_own(s)). */
+int mps_own(const struct mps_solver *s);
 
 /* Radius of the neighbour list [m]: the largest operator radius plus the
  * skin (half a spacing with the predictor when no skin is set). What a

@@ -10,6 +10,15 @@ int mps_particles_permute(struct mps_solver *s, const int32_t *perm, int n);
 /* Remove the particles outside the box; *lost: the fluid ones among them. */
 int mps_particles_drop_outside(struct mps_solver *s, int *lost);
 
+/* Room in the per-particle work arrays for P.cap particles. */
+int mps_fit_work(struct mps_solver *s);
+
+/* A distributed run (mps_halo.c; nothing when s->halo is NULL): before a
+ * step, migration and fresh ghosts; after a phase, the owners' values of
+ * a field at the ghosts. */
+int mps_halo_prepare(struct mps_solver *s);
+int mps_halo_refresh(struct mps_solver *s, void *field, size_t elem);
+
 /* Neighbours (with removal of escaped particles and renumbering) and the
  * weights of each operator radius. */
 int mps_neighbours(struct mps_solver *s);

@@ -130,26 +130,36 @@ int mps_check_extent(const struct mps_particles *P,
                      x[1], x[2], far, "xyz"[axis], cells, h);
 }
 
-static int alloc_work(struct mps_solver *s)
+/* The per-particle work arrays for P.cap particles (a distributed run's
+ * count changes every step); contents are per step, not kept. */
+int mps_fit_work(struct mps_solver *s)
 {
-    size_t c = (size_t)s->P.cap;
-    s->ustar = sim_calloc(3 * c, sizeof(double));
-    s->grad = sim_calloc(3 * c, sizeof(double));
-    s->lap = sim_calloc(3 * c, sizeof(double));
-    s->div = sim_calloc(c, sizeof(double));
-    s->rows_fluid = sim_calloc(c, 1);
-    s->rows_ppe = sim_calloc(c, 1);
-    s->rows_list = sim_calloc(c, 1);
-    s->perm = sim_calloc(c, sizeof(int32_t));
-    s->unk = sim_calloc(c, sizeof(int32_t));
-    s->b = sim_calloc(c, sizeof(double));
-    s->sol = sim_calloc(c, sizeof(double));
-    s->A.rowptr = sim_calloc(c + 1, sizeof(int64_t));
-    s->x_ref = sim_calloc(3 * c, sizeof(double));
-    if (!s->ustar || !s->grad || !s->lap || !s->div || !s->rows_fluid
-        || !s->rows_ppe || !s->rows_list || !s->perm
-        || !s->unk || !s->b || !s->sol || !s->A.rowptr || !s->x_ref)
+    const size_t c = (size_t)s->P.cap, old = s->ustar ? (size_t)s->cap_work : 0;
+    if (s->ustar && c <= old && (!s->halo || s->gunk))
+        return SIM_OK;
+    /* grown arrays start at zero in their new part, as calloc's did */
+#define FIT(a, k) do {                                                     \
+        void *t_ = sim_realloc(s->a, (k) * c * sizeof *s->a + 1);          \
+        if (!t_)                                                           \
+            return SIM_ERR_NOMEM;                                          \
+        s->a = t_;                                                         \
+        memset(s->a + (k) * old, 0, (k) * (c - old) * sizeof *s->a);       \
+    } while (0)
+    FIT(ustar, 3); FIT(grad, 3); FIT(lap, 3); FIT(div, 1);
+    FIT(rows_fluid, 1); FIT(rows_ppe, 1); FIT(rows_list, 1);
+    FIT(perm, 1); FIT(unk, 1); FIT(b, 1); FIT(sol, 1); FIT(x_ref, 3);
+    if (s->halo) {
+        FIT(gunk, 1);
+        FIT(gcol, 1);
+    }
+#undef FIT
+    int64_t *rp = sim_realloc(s->A.rowptr, (c + 1) * sizeof *rp);
+    if (!rp)
         return SIM_ERR_NOMEM;
+    if (!s->A.rowptr)
+        rp[0] = 0;
+    s->A.rowptr = rp;
+    s->cap_work = (int)c;
     return SIM_OK;
 }
 
@@ -204,7 +214,7 @@ int mps_solver_init(struct mps_solver *s, struct mps_particles *P,
     }
     TRY(mps_check_extent(&s->P, S, dp, NULL));
     box_of(&s->P, s->re_max, s->box_lo, s->box_hi);
-    TRY(alloc_work(s));
+    TRY(mps_fit_work(s));
     s->setup_rows = 1;
     TRY(mps_neighbours(s));
     /* Partners are searched over the whole list radius (skin included),
@@ -247,6 +257,7 @@ void mps_solver_free(struct mps_solver *s)
     free(s->cell_wet);
     free(s->perm); free(s->unk); free(s->b); free(s->sol);
     free(s->A.rowptr); free(s->A.col); free(s->A.val); free(s->x_ref);
+    free(s->gunk); free(s->gcol);
     free(s->wall_dx);
     mps_soil_free(s);
     linsolve_free(s->ls);

@@ -191,6 +191,7 @@ int mps_step(struct mps_solver *s, double dt)
     TRY(mps_check_finite(s));     /* state handed in from outside */
     s->dt_last = dt;
     TRY(mps_walls_begin_step(s, dt));
+    TRY(mps_halo_prepare(s));
     TRY(mps_neighbours(s));
     double t1 = omp_get_wtime();
     mps_volume_exchange(s, dt);
@@ -200,10 +201,16 @@ int mps_step(struct mps_solver *s, double dt)
     }
     predict(s, dt);
     TRY(soil_viscous(s, dt));
-    TRY(s->S.collision->apply(s, dt));
+    TRY(mps_halo_refresh(s, s->ustar, 3 * sizeof *s->ustar));
+    if (s->S.collision != &mps_stabiliser_none) {
+        TRY(s->S.collision->apply(s, dt));
+        TRY(mps_halo_refresh(s, s->ustar, 3 * sizeof *s->ustar));
+    }
     if (s->S.predictor)
         TRY(predict_positions(s, dt, 1.0));
     density(s);
+    TRY(mps_halo_refresh(s, s->P.nd, sizeof *s->P.nd));
+    TRY(mps_halo_refresh(s, s->P.fs, sizeof *s->P.fs));
     double t2 = omp_get_wtime();
     TRY(mps_ppe_solve(s, dt));
     double t3 = omp_get_wtime();
@@ -211,6 +218,7 @@ int mps_step(struct mps_solver *s, double dt)
         for (int i = 0; i < s->P.n; i++)
             s->P.p[i] = fmax(s->P.p[i], 0.0);
     mps_dummy_pressure(s);
+    TRY(mps_halo_refresh(s, s->P.p, sizeof *s->P.p));
     correct(s, dt);
     if (s->S.predictor)
         predict_positions(s, dt, -1.0);   /* back to r^m, then r^m + dt u */

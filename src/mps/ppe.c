@@ -161,6 +161,35 @@ static void source(struct mps_solver *s, double dt)
     }
 }
 
+/* A distributed run's solve (mps_halo.c): the own unknowns, numbered
+ * first, offset by the ranks before; columns made global. */
+static int solve_distributed(struct mps_solver *s, int *m_own)
+{
+    struct pop_halo *h = s->halo;
+    const int own = h->n_own, n = s->P.n;
+    int mo = 0;
+    for (int i = 0; i < own; i++)
+        mo += s->unk[i] >= 0;
+    *m_own = mo;
+    int64_t total;
+    const int64_t row0 = h->ops->exscan(h, mo, &total);
+    if (total > INT32_MAX)
+        return sim_error(SIM_ERR_INPUT, "PPE: %lld unknowns exceed the "
+                         "32-bit column numbers", (long long)total);
+    for (int i = 0; i < own; i++)
+        s->gunk[i] = s->unk[i] >= 0 ? row0 + s->unk[i] : -1;
+    TRY(mps_halo_refresh(s, s->gunk, sizeof *s->gunk));
+    for (int i = 0; i < n; i++)
+        if (s->unk[i] >= 0)
+            s->gcol[s->unk[i]] = (int32_t)s->gunk[i];
+    struct csr_matrix A = s->A;
+    A.n = mo;
+    A.nnz = s->A.rowptr[mo];
+    for (int64_t k = 0; k < A.nnz; k++)
+        A.col[k] = s->gcol[A.col[k]];
+    return h->ops->solve(h, s->ls, &A, row0, total, s->b, s->sol, &s->last);
+}
+
 int mps_ppe_solve(struct mps_solver *s, double dt)
 {
     struct mps_particles *P = &s->P;
@@ -172,7 +201,9 @@ int mps_ppe_solve(struct mps_solver *s, double dt)
     double t1 = omp_get_wtime();
     s->t.assembly += t1 - t0;
     int rc = SIM_OK;
-    if (m > 0)
+    if (s->halo)
+        rc = solve_distributed(s, &m);   /* collective, even for m = 0 */
+    else if (m > 0)
         rc = linsolve_solve(s->ls, &s->A, s->b, s->sol, &s->last);
     else
         memset(&s->last, 0, sizeof s->last);
@@ -187,6 +218,8 @@ int mps_ppe_solve(struct mps_solver *s, double dt)
         if (P->type[i] != MPS_DUMMY)
             if (s->unk[i] >= 0)
                 P->p[i] = s->sol[s->unk[i]];
+    if (!rc)
+        rc = mps_halo_refresh(s, P->p, sizeof *P->p);
     if (rc) {
         char why[512];
         snprintf(why, sizeof why, "%s", sim_error_message());

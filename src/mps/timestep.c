@@ -40,7 +40,11 @@ static double nu_max(const struct mps_settings *S)
 
 double mps_propose_dt(const struct mps_solver *s, double max_co)
 {
-    double u = pop_max_norm3(s->P.n, s->P.u, s->P.type, MPS_FLUID);
+    /* the own particles: a ghost's velocity after the step is its row's,
+     * not its owner's (mps_halo.c) */
+    double u = pop_max_norm3(mps_own(s), s->P.u, s->P.type, MPS_FLUID);
+    if (s->halo)
+        u = s->halo->ops->reduce(s->halo, u, POP_MAX);
     return pop_stable_dt(s->dp, nu_max(&s->S), u, gnorm(&s->S), max_co);
 }
 

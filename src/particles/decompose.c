@@ -26,12 +26,13 @@ static int cmp_key(const void *a, const void *b)
     return (p->i > q->i) - (p->i < q->i);
 }
 
-/* Cut idx[0, m) (sorted scratch k) for nparts subdomains from `first`. */
+/* Cut idx[0, m) (sorted scratch k) for nparts subdomains from `first`;
+ * with cuts, the cut of this set goes to cuts[node] (pre-order). */
 static void bisect(int dim, const double *x, const double *w, int32_t *idx,
                    int m, int nparts, int first, struct key *k,
-                   int32_t *part)
+                   int32_t *part, struct decompose_cut *cuts, int node)
 {
-    if (nparts == 1 || m == 0) {
+    if (nparts == 1 || (m == 0 && !cuts)) {
         for (int e = 0; e < m; e++)
             part[idx[e]] = first;
         return;
@@ -72,13 +73,27 @@ static void bisect(int dim, const double *x, const double *w, int32_t *idx,
         cut = m - 1;
     for (int e = 0; e < m; e++)
         idx[e] = k[e].i;
-    bisect(dim, x, w, idx, cut, left, first, k, part);
+    if (cuts) {
+        /* midway between the last particle below and the first above; an
+         * empty set cuts anywhere (its subdomains start empty) */
+        double v = m == 0 ? 0.0 : cut == 0 ? k[0].v
+                 : cut == m ? nextafter(k[m - 1].v, INFINITY)
+                 : 0.5 * (k[cut - 1].v + k[cut].v);
+        cuts[node] = (struct decompose_cut){ axis, v };
+    }
+    bisect(dim, x, w, idx, cut, left, first, k, part, cuts, node + 1);
     bisect(dim, x, w, idx + cut, m - cut, nparts - left, first + left, k,
-           part);
+           part, cuts, node + left);
 }
 
 int decompose_rcb(int dim, const double *x, const double *weight, int n,
                   int nparts, int32_t *part)
+{
+    return decompose_rcb_cuts(dim, x, weight, n, nparts, part, NULL);
+}
+
+int decompose_rcb_cuts(int dim, const double *x, const double *weight, int n,
+                       int nparts, int32_t *part, struct decompose_cut *cuts)
 {
     if (nparts < 1)
         return sim_error(SIM_ERR_INPUT, "decompose: %d subdomains (at least "
@@ -97,10 +112,28 @@ int decompose_rcb(int dim, const double *x, const double *weight, int n,
     }
     for (int i = 0; i < n; i++)
         idx[i] = i;
-    bisect(dim, x, weight, idx, n, nparts, 0, k, part);
+    bisect(dim, x, weight, idx, n, nparts, 0, k, part, cuts, 0);
     free(idx);
     free(k);
     return SIM_OK;
+}
+
+int decompose_owner(const struct decompose_cut *cuts, int nparts,
+                    const double *x)
+{
+    int node = 0, first = 0;
+    while (nparts > 1) {
+        const int left = nparts / 2;
+        if (x[cuts[node].axis] < cuts[node].value) {
+            node += 1;
+            nparts = left;
+        } else {
+            node += left;
+            first += left;
+            nparts -= left;
+        }
+    }
+    return first;
 }
 
 int decompose_halo(int dim, const double *x, const double *weight, int n,

@@ -29,6 +29,21 @@
 int decompose_rcb(int dim, const double *x, const double *weight, int n,
                   int nparts, int32_t *part);
 
+/* The same, also recording the cuts, so that any position can be given
+ * its subdomain later (decompose_owner: particles that move migrate).
+ * cuts: room for nparts - 1 (pre-order: a set's cut, then those of its
+ * lower side, then those of its upper side). A cut lies midway between
+ * the last particle below and the first above; part[] is the bisection's
+ * own answer, which decompose_owner repeats except for particles on a cut
+ * plane (they go up). */
+struct decompose_cut { int axis; double value; };
+int decompose_rcb_cuts(int dim, const double *x, const double *weight, int n,
+                       int nparts, int32_t *part, struct decompose_cut *cuts);
+
+/* The subdomain whose region holds position x (x < value: lower side). */
+int decompose_owner(const struct decompose_cut *cuts, int nparts,
+                    const double *x);
+
 struct decompose_part {
     long owned;        /* particles                                   */
     double weight;     /* their weight                                */

@@ -16,6 +16,62 @@
 #include "io/vtu.h"
 #include "particles/lattice.h"
 
+#ifdef MPSDEM_HAVE_MPI
+#include <mpi.h>
+
+/* A rank that stops on an error (app_fatal exits) takes the job down: the
+ * others may wait in a collective for it. A complete run finalises
+ * before it exits, so this aborts only after an error. */
+static int mpi_started;
+
+static void abort_job(void)
+{
+    int init = 0, done = 0;
+    MPI_Initialized(&init);
+    MPI_Finalized(&done);
+    if (init && !done)
+        MPI_Abort(MPI_COMM_WORLD, 1);
+}
+#endif
+
+/* -parallel among the arguments: MPI starts before anything is logged, so
+ * that only rank 0 logs. */
+static int start_parallel(struct solver *sv, int argc, char **argv)
+{
+    int want = 0;
+    sv->rank = 0;
+    sv->nranks = 1;
+    for (int k = 1; k < argc; k++)
+        want |= !strcmp(argv[k], "-parallel");
+    if (!want)
+        return SIM_OK;
+    if (!sv->ops->parallel)
+        return sim_error(SIM_ERR_INPUT, "-parallel: %s runs in one process "
+                         "only", sv->ops->name);
+#ifdef MPSDEM_HAVE_MPI
+    if (MPI_Init(&argc, &argv) != MPI_SUCCESS)
+        return sim_error(SIM_ERR_EXTERNAL, "-parallel: MPI_Init failed");
+    mpi_started = 1;
+    sv->distributed = 1;
+    atexit(abort_job);
+    MPI_Comm_rank(MPI_COMM_WORLD, &sv->rank);
+    MPI_Comm_size(MPI_COMM_WORLD, &sv->nranks);
+    if (sv->rank > 0)
+        log_set_quiet(1);
+    return SIM_OK;
+#else
+    return sim_error(SIM_ERR_INPUT, "-parallel: this %s was built without "
+                     "MPI; build the MPI one with `make MPI=1` and run "
+                     "`mpirun -np N bin-hypre/%s -parallel`", sv->ops->name,
+                     sv->ops->name);
+#endif
+}
+
+static int root(const struct solver *sv)
+{
+    return sv->rank == 0;
+}
+
 int solver_check_unused(struct solver *sv, const struct dict *d)
 {
     if (sv->nchecked == SOLVER_MAX_CHECKED)
@@ -35,6 +91,10 @@ static int create_time(struct solver *sv)
     TRY(app_read_dict_optional(&sv->app, "system/couplingDict",
                                &sv->coupling));
     TRY(couple_enabled(sv->coupling, &sv->coupled));
+    if (sv->coupled && sv->nranks > 1)
+        return sim_error(SIM_ERR_INPUT, "system/couplingDict: a coupled "
+                         "run does not run distributed (-parallel) yet: run "
+                         "%s in one process", sv->ops->name);
     if (sv->coupled && !sv->ops->coupling)
         return sim_error(SIM_ERR_INPUT, "system/couplingDict: %s cannot "
                          "run coupled", sv->ops->name);
@@ -51,6 +111,8 @@ static int create_time(struct solver *sv)
 static int create_functions(struct solver *sv)
 {
     TRY(sv->ops->refresh_scene(sv));
+    if (!root(sv))
+        return SIM_OK;
     return fo_list_create(sv->rt.functions, sv->ops->fo_tables, &sv->scene,
                           sv->app.case_abs, sv->rt.start_time,
                           sv->rt.precision, &sv->fos);
@@ -68,6 +130,8 @@ static const char *pvd_path(const struct solver *sv, char *buf, size_t n)
 static int start_output(struct solver *sv)
 {
     char pvd[4200], rel[256];
+    if (!root(sv))
+        return SIM_OK;
     pvd_path(sv, pvd, sizeof pvd);
     if (access(pvd, F_OK) == 0)
         TRY(pvd_truncate(pvd, sv->rt.value));
@@ -79,6 +143,8 @@ static int start_output(struct solver *sv)
 int solver_write(struct solver *sv, const char *prefix)
 {
     char dir[4200], pvd[4200], rel[256];
+    if (!root(sv))
+        return sv->ops->write(sv, NULL);
     TRY(time_make_dir(&sv->rt, sv->app.case_abs, prefix, dir, sizeof dir));
     int rc = sv->ops->write(sv, dir);
     if (rc) {
@@ -96,6 +162,8 @@ int solver_write(struct solver *sv, const char *prefix)
 static int failed(struct solver *sv, int rc)
 {
     char msg[1024];
+    if (sv->nranks > 1)
+        return rc;   /* the ranks that did not fail cannot take part */
     snprintf(msg, sizeof msg, "%s", sim_error_message());
     if (solver_write(sv, "failed.") == SIM_OK)
         log_info("State at the failure written to failed.%s/%s.vtu (to "
@@ -156,7 +224,8 @@ static int step(struct solver *sv)
     if (o->check)
         TRY(o->check(sv));
     TRY(o->refresh_scene(sv));
-    TRY(fo_list_execute(sv->fos, &sv->scene, sv->rt.write_now));
+    if (root(sv))
+        TRY(fo_list_execute(sv->fos, &sv->scene, sv->rt.write_now));
     if (sv->rt.write_now) {
         if (o->prepare_write)
             TRY(o->prepare_write(sv));
@@ -184,6 +253,9 @@ static int relax(struct solver *sv, const char *arg)
         return sim_error(SIM_ERR_INPUT, "system/couplingDict: -relax runs "
                          "%s alone: set coupled no for the relaxation, and "
                          "back to yes for the run", o->name);
+    if (sv->nranks > 1)
+        return sim_error(SIM_ERR_INPUT, "-relax runs in one process: run it "
+                         "without -parallel, then the distributed run");
     TRY(o->rest(sv));
     struct run_time start = sv->rt;
     sv->rt.end_time = start.value + span;
@@ -230,33 +302,45 @@ static int finish(struct solver *sv)
     fo_list_free(sv->fos);
     dict_free(sv->coupling);
     dict_free(sv->control);
-    return app_end(&sv->app);
+    int rc = app_end(&sv->app);
+#ifdef MPSDEM_HAVE_MPI
+    if (mpi_started)
+        MPI_Finalize();
+#endif
+    return rc;
 }
 
 int solver_main(const struct solver_ops *ops, struct solver *sv, int argc,
                 char **argv)
 {
-    const char *list = NULL, *relax_time = NULL;
-    struct app_option opts[3] = { { 0 } };
+    const char *list = NULL, *relax_time = NULL, *parallel = NULL;
+    struct app_option opts[4] = { { 0 } };
     int rc, nopts = 0;
 
     if (ops->list_models)
         opts[nopts++] = (struct app_option){ "-listModels", 0, NULL,
             "print every model choice (dictionary key name) and exit",
             &list };
+    if (ops->parallel)
+        opts[nopts++] = (struct app_option){ "-parallel", 0, NULL,
+            "run on the ranks of mpirun (mpirun -np N ... -parallel; the "
+            "MPI build, make MPI=1)", &parallel };
     if (ops->rest)
         opts[nopts++] = (struct app_option){ "-relax", 1, "T",
             "a relaxed start: run T s from the start time without output, "
             "then write that state at rest as the start time's cloud, and "
             "exit", &relax_time };
     sv->ops = ops;
+    rc = start_parallel(sv, argc, argv);
     app_init(&sv->app, ops->name, ops->description, argc, argv,
              nopts ? opts : NULL, 0);
+    if (rc)
+        app_fatal(&sv->app, rc);
     if (list) {
         ops->list_models();
         return 0;
     }
-    if ((rc = app_lock_case(&sv->app)) || (rc = create_time(sv))
+    if ((root(sv) && (rc = app_lock_case(&sv->app))) || (rc = create_time(sv))
         || (rc = ops->create(sv)))
         app_fatal(&sv->app, rc);
     if (relax_time) {

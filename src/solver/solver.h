@@ -115,6 +115,11 @@ struct solver_ops {
     /* NULL: the program runs alone only (a case whose couplingDict says
      * coupled yes is an input error). */
     const struct solver_coupling *coupling;
+    /* The program runs distributed with -parallel (MPI builds; doc/
+     * design.md §8). Then every rank runs every hook; the hooks that
+     * gather (refresh_scene, write) are collective, and write is called
+     * with dir NULL on the ranks other than 0, which write nothing. */
+    int parallel;
 };
 
 struct solver {
@@ -128,6 +133,10 @@ struct solver {
     struct fo_scene scene;      /* filled by ops->refresh_scene           */
     const struct dict *checked[SOLVER_MAX_CHECKED];
     int nchecked;
+    /* -parallel: this process's rank and the number of ranks (0 and 1 in
+     * one process); only rank 0 logs, locks the case and writes. */
+    int rank, nranks;
+    int distributed;            /* -parallel was given                    */
 };
 
 /* Run the program: returns the exit status of a complete run; on an error

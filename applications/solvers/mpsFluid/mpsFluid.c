@@ -40,6 +40,9 @@
 #include "mps/mps.h"
 #include "mps/soil/soil.h"
 #include "solver/solver.h"
+#ifdef MPSDEM_HAVE_MPI
+#include "particles/distribute.h"
+#endif
 
 #define MAX_PATCHES 64
 
@@ -62,6 +65,12 @@ struct fluid {
     struct vtu_field fields[STORE_MAX_FIELDS];
     struct couple_fluid cf;         /* coupled runs only                 */
     struct couple_output out;
+#ifdef MPSDEM_HAVE_MPI
+    struct dist *dist;              /* -parallel: this rank's part       */
+#endif
+    const struct store *whole;      /* the cloud written and measured:
+                                       s.P.st, or with -parallel the
+                                       gathered one (rank 0; else NULL) */
 };
 
 /* constant/particlePatches: patch names, dimension and dp of the lattice. */
@@ -337,6 +346,52 @@ static int create_fluid(struct fluid *f)
                            f->sv.rt.adjust ? f->sv.rt.max_co : 0.2);
 }
 
+#ifdef MPSDEM_HAVE_MPI
+static int halo_solve(struct pop_halo *h, struct linsolve *ls,
+                      const struct csr_matrix *A, int64_t row0,
+                      int64_t nglobal, const double *b, double *x,
+                      struct linsolve_stats *st)
+{
+    return linsolve_solve_dist(ls, dist_comm(h), A, row0, nglobal, b, x, st);
+}
+
+/* -parallel: every rank read the whole start cloud and set the solver up
+ * on it; each keeps its region's particles and the ghosts (doc/design.md
+ * §8), cut by recursive coordinate bisection with every particle counted
+ * once. */
+static int distribute(struct fluid *f)
+{
+    TRY(dist_create(MPI_COMM_WORLD, f->dim, f->s.r_list, &f->dist));
+    dist_set_solve(f->dist, halo_solve);
+    TRY(dist_split(f->dist, &f->s.P.st, NULL));
+    TRY(mps_distribute(&f->s, dist_halo(f->dist)));
+    struct pop_halo *h = dist_halo(f->dist);
+    log_info("Distributed over %d ranks: rank 0 owns %d particles and "
+             "holds %d ghosts within %g m", h->size, h->n_own,
+             f->s.P.n - h->n_own, f->s.r_list);
+    return SIM_OK;
+}
+#endif
+
+/* The cloud of the output and the function objects: with -parallel, the
+ * ranks' own particles gathered on rank 0 (collective). */
+static int whole_cloud(struct fluid *f)
+{
+#ifdef MPSDEM_HAVE_MPI
+    if (f->dist) {
+        struct store *w;
+        TRY(dist_gather(f->dist, &f->s.P.st, &w));
+        f->whole = w;
+        struct pop_halo *h = dist_halo(f->dist);
+        for (int k = 0; k < 3 * f->npatches; k++)
+            f->force[k] = h->ops->reduce(h, f->force[k], POP_SUM);
+        return SIM_OK;
+    }
+#endif
+    f->whole = &f->s.P.st;
+    return SIM_OK;
+}
+
 static int refresh_scene(struct solver *sv)
 {
     struct fluid *f = (struct fluid *)sv;
@@ -348,8 +403,11 @@ static int refresh_scene(struct solver *sv)
         double *react;
         TRY(couple_output_reaction(&f->out, P, &react));
     }
-    store_cloud(&P->st, f->sv.rt.value, f->fields, &f->cloud);
     mps_wall_forces(&f->s, f->npatches, f->force);
+    TRY(whole_cloud(f));
+    if (!f->whole)
+        return SIM_OK;    /* a rank other than 0 of a distributed run */
+    store_cloud(f->whole, f->sv.rt.value, f->fields, &f->cloud);
     int nv = 0;
     for (int k = 0; k < f->npatches; k++, nv++) {
         snprintf(f->value_names[nv], sizeof f->value_names[nv],
@@ -364,7 +422,7 @@ static int refresh_scene(struct solver *sv)
                                          .v = { f->s.Ln.n0 } };
     f->sv.scene = (struct fo_scene){
         .time = f->sv.rt.value, .dt = f->sv.rt.dt, .step = f->sv.rt.step,
-        .dim = f->dim, .cloud_name = "fluid", .store = &P->st,
+        .dim = f->dim, .cloud_name = "fluid", .store = f->whole,
         .spacing = f->dp, .patch_names = f->patch_names,
         .npatches = f->npatches, .values = f->values, .nvalues = nv,
         .solver = &f->s };
@@ -375,6 +433,10 @@ static int create(struct solver *sv)
 {
     struct fluid *f = (struct fluid *)sv;
     TRY(create_fluid(f));
+#ifdef MPSDEM_HAVE_MPI
+    if (sv->distributed)
+        TRY(distribute(f));
+#endif
     TRY(solver_check_unused(sv, f->schemes));
     TRY(solver_check_unused(sv, f->solution));
     return solver_check_unused(sv, f->transport);
@@ -386,6 +448,8 @@ static int write_fields(struct solver *sv, const char *dir)
     struct fluid *f = (struct fluid *)sv;
     char path[4400];
     TRY(refresh_scene(sv));
+    if (!dir)
+        return SIM_OK;    /* a rank other than 0 of a distributed run */
     snprintf(path, sizeof path, "%s/fluid.vtu", dir);
     return vtu_write(path, &f->cloud, sv->rt.binary);
 }
@@ -433,9 +497,10 @@ static int rest(struct solver *sv)
 static void progress(struct solver *sv, char *buf, size_t n)
 {
     const struct mps_solver *s = &((struct fluid *)sv)->s;
+    const struct store *w = ((struct fluid *)sv)->whole;
     snprintf(buf, n, "PPE: %d iterations, residual %.3g  particles %d  "
-             "escaped %ld", s->last.iters, s->last.res_rel, s->P.n,
-             s->n_escaped);
+             "escaped %ld", s->last.iters, s->last.res_rel,
+             w ? (int)w->n : s->P.n, s->n_escaped);
 }
 
 static void final_stats(struct solver *sv)
@@ -475,6 +540,9 @@ static void cleanup(struct solver *sv)
     struct fluid *f = (struct fluid *)sv;
     couple_fluid_free(&f->cf);
     couple_output_free(&f->out);
+#ifdef MPSDEM_HAVE_MPI
+    dist_free(f->dist);
+#endif
     mps_solver_free(&f->s);
     dict_free(f->transport);
     dict_free(f->gravity);
@@ -554,6 +622,7 @@ static const struct solver_ops fluid_ops = {
     .rest = rest,
     .cleanup = cleanup,
     .coupling = &coupling,
+    .parallel = 1,
 };
 
 int main(int argc, char **argv)

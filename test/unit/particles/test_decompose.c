@@ -7,6 +7,9 @@
  *   - a box long in x is first cut across x (all of one side below the
  *     other), and the same input gives the same partition;
  *   - halo and neighbour counts equal an O(n^2) count, 2-D and 3-D;
+ *   - the recorded cuts give every particle the subdomain the bisection
+ *     gave it (decompose_owner), 2-D and 3-D, k = 1 ... 13, also with
+ *     fewer particles than subdomains;
  *   - bad input (no subdomain, a NaN position, rc <= 0) is refused.
  */
 #include <math.h>
@@ -161,6 +164,26 @@ static void test_halo_brute(void **st)
     halo_case(3, 800, 1, 0.2);
 }
 
+static void test_cuts_owner(void **st)
+{
+    (void)st;
+    for (int dim = 2; dim <= 3; dim++)
+        for (int n = 3; n <= 3000; n += 2997) {
+            double *x = cloud(n, dim, 2.0);
+            int32_t *part = malloc(n * sizeof *part);
+            struct decompose_cut cuts[12];
+            for (int k = 1; k <= 13; k++) {
+                assert_int_equal(decompose_rcb_cuts(dim, x, NULL, n, k, part,
+                                                    cuts), SIM_OK);
+                for (int i = 0; i < n; i++)
+                    assert_int_equal(decompose_owner(cuts, k, x + 3 * i),
+                                     part[i]);
+            }
+            free(part);
+            free(x);
+        }
+}
+
 static void test_bad_input(void **st)
 {
     (void)st;
@@ -183,6 +206,7 @@ int main(void)
         cmocka_unit_test(test_weights),
         cmocka_unit_test(test_first_cut_and_repeat),
         cmocka_unit_test(test_halo_brute),
+        cmocka_unit_test(test_cuts_owner),
         cmocka_unit_test(test_bad_input),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);

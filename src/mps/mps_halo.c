@@ -1,0 +1,122 @@
+/*
+ * mps_halo.c — the MPS step on one rank of a distributed run (issue 22;
+ * doc/design.md §8; particles/halo.h).
+ *
+ * Every operator of the step is a sum over a particle's neighbours within
+ * the list radius r_list, so a rank computes the rows of its own
+ * particles as one process does when the ghosts within r_list carry the
+ * owners' values of what the row reads. mps_step calls mps_halo_refresh
+ * after each phase whose result a neighbour's row reads:
+ *
+ *   prediction, then the collision model   u*      (collision, r* = r + dt u*,
+ *                                                   div u* of the PPE)
+ *   number density and surface test        n, fs   (the PPE's Dirichlet
+ *                                                   neighbours, its pattern)
+ *   PPE, then the dummies' pressure        P       (the gradient, the
+ *                                                   dummies' partner value)
+ *
+ * The rows of the ghosts are computed too and thrown away: their sums miss
+ * the particles beyond the halo. The PPE's unknowns are numbered per rank,
+ * own ones first, and offset by the count of the ranks before (exscan);
+ * the ghosts learn their owners' numbers, the matrix of the own rows gets
+ * global columns, and the ranks solve it together (h->ops->solve).
+ *
+ * Before each step the particles that left the box escape (counted over
+ * all ranks), the others migrate to the rank whose region holds them, and
+ * the ghosts are copied afresh, so the neighbour list is built every step.
+ */
+#include <math.h>
+#include <string.h>
+
+#include "core/error.h"
+#include "core/log.h"
+#include "mps/mps.h"
+#include "mps/mps_impl.h"
+#include "mps/stabiliser/stabiliser.h"
+
+int mps_own(const struct mps_solver *s)
+{
+    return s->halo ? s->halo->n_own : s->P.n;
+}
+
+static int not_yet(const char *what)
+{
+    return sim_error(SIM_ERR_INPUT, "%s does not run distributed (-parallel) "
+                     "yet: run it in one process", what);
+}
+
+int mps_distribute(struct mps_solver *s, struct pop_halo *h)
+{
+    const struct mps_settings *S = &s->S;
+    const struct mps_particles *P = &s->P;
+    if (s->soil)
+        return not_yet("A case with soil particles (constant/soilProperties)");
+    if (S->shifting != &mps_stabiliser_none)
+        return not_yet("system/mpsSchemes: shifting other than none");
+    if (S->fs_pressure == MPS_FS_P_EXTRAPOLATED)
+        return not_yet("system/mpsSchemes: freeSurface { pressure "
+                       "extrapolated; }");
+    if (S->dummy_pressure == MPS_DUMMY_P_EXTRAPOLATED)
+        return not_yet("system/mpsSchemes: dummyPressure extrapolated");
+    for (int k = 0; k < S->n_wall_motion && S->wall_motion; k++)
+        if (isfinite(S->wall_motion[k].remove_at))
+            return not_yet("system/particleDict: a wall region with "
+                           "removeAt");
+    if (P->inv_eps || P->f_ext || P->phi || S->phi_relax_time > 0)
+        return not_yet("A coupled case (system/couplingDict: coupled yes)");
+    s->halo = h;
+    s->S.renumber_interval = 0;   /* the own particles stay first */
+    s->rebuild = 1;
+    s->P.n = (int)s->P.st.n;
+    s->P.cap = (int)s->P.st.cap;
+    return mps_fit_work(s);
+}
+
+int mps_halo_prepare(struct mps_solver *s)
+{
+    struct pop_halo *h = s->halo;
+    if (!h)
+        return SIM_OK;
+    struct mps_particles *P = &s->P;
+    /* own particles outside the box escape here, as cells_build would
+     * find them; the ghosts are dropped by the exchange anyway */
+    int m = 0, lost = 0, ic[3];
+    for (int i = 0; i < h->n_own; i++) {
+        if (cells_locate(&s->grid, P->x + 3 * i, ic))
+            s->perm[m++] = i;
+        else
+            lost += P->type[i] == MPS_FLUID;
+    }
+    const int own = m;
+    for (int i = h->n_own; i < P->n; i++)
+        s->perm[m++] = i;
+    if (m < P->n) {
+        TRY(store_compact(&P->st, s->perm, (size_t)m));
+        P->n = m;
+        h->n_own = own;
+    }
+    long all = (long)h->ops->reduce(h, lost, POP_SUM);
+    if (all) {
+        s->n_escaped += all;
+        log_info("    %ld fluid particle(s) left the domain [%g %g %g] - "
+                 "[%g %g %g] and were removed (%ld in total)", all,
+                 s->box_lo[0], s->box_lo[1], s->box_lo[2], s->box_hi[0],
+                 s->box_hi[1], s->box_hi[2], s->n_escaped);
+        if (s->n_escaped > s->S.max_escape_fraction * s->n_fluid0)
+            return sim_error(SIM_ERR_INPUT, "%ld of %d fluid particles have "
+                             "left the domain (more than maxEscapeFraction "
+                             "%g): the run is unstable or the tank is open",
+                             s->n_escaped, s->n_fluid0,
+                             s->S.max_escape_fraction);
+    }
+    TRY(h->ops->exchange(h, &P->st));
+    P->n = (int)P->st.n;
+    P->cap = (int)P->st.cap;
+    s->rebuild = 1;
+    return mps_fit_work(s);
+}
+
+int mps_halo_refresh(struct mps_solver *s, void *field, size_t elem)
+{
+    return s->halo ? s->halo->ops->refresh(s->halo, field, elem) : SIM_OK;
+}
