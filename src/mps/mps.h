@@ -280,8 +280,11 @@ int mps_settings_read(const struct dict *transport, const struct dict *g,
  * solved over the ranks by h->ops->solve. Refused (SIM_ERR_INPUT, naming
  * the setting) for what does not run distributed yet: soil, removed
  * wall patches, shifting, extrapolated surface or dummy pressure, the
- * coupling hooks. Renumbering is off (the owned particles stay first). */
-int mps_distribute(struct mps_solver *s, struct pop_halo *h);
+ * coupling hooks; located in schemes (system/mpsSchemes, may be NULL)
+ * where the setting is its key. Renumbering is off (the own particles
+ * stay first). */
+int mps_distribute(struct mps_solver *s, struct pop_halo *h,
+                   const struct dict *schemes);
 
 /* The particles this process owns: [0, mps_own(s)). */
 int mps_own(const struct mps_solver *s);

@@ -26,8 +26,10 @@
  * the ghosts are copied afresh, so the neighbour list is built every step.
  */
 #include <math.h>
+#include <stdio.h>
 #include <string.h>
 
+#include "core/dict.h"
 #include "core/error.h"
 #include "core/log.h"
 #include "mps/mps.h"
@@ -39,31 +41,48 @@ int mps_own(const struct mps_solver *s)
     return s->halo ? s->halo->n_own : s->P.n;
 }
 
-static int not_yet(const char *what)
+/* "<file:line:col>: <what> does not run distributed ...", located at key
+ * of d when the case's dictionary is at hand (d NULL or key absent: the
+ * text alone). */
+static int not_yet(const struct dict *d, const char *key, const char *file,
+                   const char *what)
 {
-    return sim_error(SIM_ERR_INPUT, "%s does not run distributed (-parallel) "
-                     "yet: run it in one process", what);
+    char where[512];
+    snprintf(where, sizeof where, "%s", file);
+    if (d && key && dict_has(d, key))
+        dict_where(d, key, where, sizeof where);
+    return sim_error(SIM_ERR_INPUT, "%s: %s does not run distributed "
+                     "(-parallel) yet: run the case in one process", where,
+                     what);
 }
 
-int mps_distribute(struct mps_solver *s, struct pop_halo *h)
+int mps_distribute(struct mps_solver *s, struct pop_halo *h,
+                   const struct dict *schemes)
 {
     const struct mps_settings *S = &s->S;
     const struct mps_particles *P = &s->P;
+    const struct dict *fs = NULL;
+    if (schemes && dict_is_dict(schemes, "freeSurface"))
+        TRY(dict_get_dict(schemes, "freeSurface", &fs));
     if (s->soil)
-        return not_yet("A case with soil particles (constant/soilProperties)");
+        return not_yet(NULL, NULL, "constant/soilProperties", "a case with "
+                       "soil particles");
     if (S->shifting != &mps_stabiliser_none)
-        return not_yet("system/mpsSchemes: shifting other than none");
+        return not_yet(schemes, "shifting", "system/mpsSchemes", "shifting "
+                       "other than none");
     if (S->fs_pressure == MPS_FS_P_EXTRAPOLATED)
-        return not_yet("system/mpsSchemes: freeSurface { pressure "
-                       "extrapolated; }");
+        return not_yet(fs, "pressure", "system/mpsSchemes", "freeSurface { "
+                       "pressure extrapolated; }");
     if (S->dummy_pressure == MPS_DUMMY_P_EXTRAPOLATED)
-        return not_yet("system/mpsSchemes: dummyPressure extrapolated");
+        return not_yet(schemes, "dummyPressure", "system/mpsSchemes",
+                       "dummyPressure extrapolated");
     for (int k = 0; k < S->n_wall_motion && S->wall_motion; k++)
         if (isfinite(S->wall_motion[k].remove_at))
-            return not_yet("system/particleDict: a wall region with "
-                           "removeAt");
+            return not_yet(NULL, NULL, "system/particleDict", "a wall region "
+                           "with removeAt");
     if (P->inv_eps || P->f_ext || P->phi || S->phi_relax_time > 0)
-        return not_yet("A coupled case (system/couplingDict: coupled yes)");
+        return not_yet(NULL, NULL, "system/couplingDict", "a coupled case "
+                       "(coupled yes)");
     s->halo = h;
     s->S.renumber_interval = 0;   /* the own particles stay first */
     s->rebuild = 1;

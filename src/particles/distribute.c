@@ -39,6 +39,10 @@ struct dist {
     int whole_made;
     int64_t *order;
     size_t order_cap;
+    /* statistics: particles sent to another owner, ghosts held, over the
+     * exchanges so far */
+    long migrated, exchanges;
+    double ghost_sum;
 };
 
 static int travels(const struct store_field *f)
@@ -289,6 +293,7 @@ static int migrate(struct dist *d, struct store *st)
     for (int e = 0; e < off; e++)
         pack(st, (size_t)d->send_idx[e], d->sbuf + (size_t)e * R, NULL);
     compact_raw(st, d->keep, m);
+    d->migrated += off;
     MPI_Alltoall(d->scount, 1, MPI_INT, d->rcount, 1, MPI_INT, d->comm);
     size_t nr = 0;
     for (int r = 0; r < P; r++) {
@@ -371,6 +376,8 @@ static int exchange(struct pop_halo *h, struct store *st)
     TRY(migrate(d, st));
     h->n_own = (int)st->n;
     TRY(ghosts(d, st));
+    d->exchanges++;
+    d->ghost_sum += (double)(st->n - (size_t)h->n_own);
     return ids_to_index(d, st);
 }
 
@@ -503,6 +510,24 @@ int dist_split(struct dist *d, struct store *st, const double *weight)
     d->h.n_own = (int)m;
     TRY(ghosts(d, st));
     return ids_to_index(d, st);
+}
+
+void dist_stats(struct dist *d, struct dist_stats *out)
+{
+    long m = d->migrated;
+    double g[2] = { d->ghost_sum, (double)d->exchanges }, own = d->h.n_own,
+           gmax = d->exchanges ? d->ghost_sum / d->exchanges : 0;
+    MPI_Allreduce(&d->migrated, &m, 1, MPI_LONG, MPI_SUM, d->comm);
+    MPI_Allreduce(MPI_IN_PLACE, g, 2, MPI_DOUBLE, MPI_SUM, d->comm);
+    MPI_Allreduce(MPI_IN_PLACE, &gmax, 1, MPI_DOUBLE, MPI_MAX, d->comm);
+    double omin = own, omax = own;
+    MPI_Allreduce(&own, &omin, 1, MPI_DOUBLE, MPI_MIN, d->comm);
+    MPI_Allreduce(&own, &omax, 1, MPI_DOUBLE, MPI_MAX, d->comm);
+    *out = (struct dist_stats){
+        .ranks = d->h.size, .migrated = m,
+        .exchanges = d->exchanges,
+        .ghosts_mean = g[1] > 0 ? g[0] / g[1] : 0, .ghosts_max = gmax,
+        .own_min = (long)omin, .own_max = (long)omax };
 }
 
 static int cmp_id(const void *a, const void *b)

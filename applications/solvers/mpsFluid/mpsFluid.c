@@ -364,7 +364,7 @@ static int distribute(struct fluid *f)
     TRY(dist_create(MPI_COMM_WORLD, f->dim, f->s.r_list, &f->dist));
     dist_set_solve(f->dist, halo_solve);
     TRY(dist_split(f->dist, &f->s.P.st, NULL));
-    TRY(mps_distribute(&f->s, dist_halo(f->dist)));
+    TRY(mps_distribute(&f->s, dist_halo(f->dist), f->schemes));
     struct pop_halo *h = dist_halo(f->dist);
     log_info("Distributed over %d ranks: rank 0 owns %d particles and "
              "holds %d ghosts within %g m", h->size, h->n_own,
@@ -533,6 +533,17 @@ static void final_stats(struct solver *sv)
                  t->ppe_solve, t->ppe);
     log_info("    particle-steps/s      %.4g (wall clock of the run %.3g s)",
              wall > 0 ? ps / wall : 0.0, wall);
+#ifdef MPSDEM_HAVE_MPI
+    if (f->dist) {
+        struct dist_stats d;
+        dist_stats(f->dist, &d);
+        log_info("    distributed           %d ranks (the numbers above: "
+                 "rank 0's), own particles %ld-%ld per rank now, %ld "
+                 "migrations in %ld exchanges, ghosts per rank %.0f (mean), "
+                 "%.0f (largest rank)", d.ranks, d.own_min, d.own_max,
+                 d.migrated, d.exchanges, d.ghosts_mean, d.ghosts_max);
+    }
+#endif
 }
 
 static void cleanup(struct solver *sv)

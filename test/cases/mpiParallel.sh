@@ -1,0 +1,173 @@
+#!/usr/bin/env bash
+# mpiParallel.sh — mpsFluid distributed over MPI ranks (issue 22;
+# doc/design.md §8): `mpirun -np N bin-hypre/mpsFluid -parallel`, the MPI
+# build that test/Alltest makes (make MPI=1), against bin/mpsFluid in one
+# process on the same case. Ranks beyond the 2 cores run oversubscribed.
+#
+# Tolerances: the one-process run solves the PPE with the case's solver
+# (PCG with ic0 or Jacobi), the distributed one with hypre (PCG with
+# BoomerAMG or diagonal scaling), both to the relative residual 1e-8, and
+# the sums run in another order; the runs then differ by what those
+# differences grow to, measured 4e-7 m in 0.1 s (damBreak2D, 4 ranks) and
+# 3e-13 m in 0.2 s (Kleefsman dp 0.04, 2 ranks). Bound: 1e-5 m
+# (0.2 % of the spacing) and 1 Pa.
+#   mpi_same_2d       damBreak2D to 0.1 s with 1, 2 and 4 ranks: every
+#                     particle (matched by id) within the bounds of the
+#                     one-process run, the surge front and column height
+#                     within 1e-5 m at every step
+#   mpi_migration     with 4 ranks particles migrated and ghosts were held;
+#                     the fluid count stays 200 at every step
+#   mpi_restart_n     4 ranks to 0.05 s, then 2 ranks from that state to
+#                     0.1 s: within 1e-6 m of the 4-rank run to 0.1 s
+#   mpi_same_3d       Kleefsman (dp 0.04, 44 892 particles) to 0.02 s on 2
+#                     ranks: within the bounds, force on the box within
+#                     1e-4 of the one-process value
+#   mpi_rank_killed   a rank killed (SIGKILL) mid-run: mpirun ends within
+#                     30 s with a non-zero status (no hang)
+#   mpi_refused       -parallel with the build without MPI, with shifting
+#                     (system/mpsSchemes, its line), with a coupled case:
+#                     exit 1, the message, no time directory
+NAME=mpiParallel; . "$(dirname "$0")/lib/case.sh"
+need_bins genParticles mpsFluid vtuInfo
+MPI_FLUID=${MPI_FLUID:-$ROOT/bin-hypre/mpsFluid}
+[ -x "$MPI_FLUID" ] || { fail "$NAME" "$MPI_FLUID not built (make MPI=1)"; exit 1; }
+command -v mpirun > /dev/null || { fail "$NAME" "mpirun not found"; exit 1; }
+export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
+export OMPI_MCA_rmaps_base_oversubscribe=1
+
+# case DIR TUTORIAL ENDTIME: a copy with its particles, ending at ENDTIME
+case_copy() {
+    cp -r "$ROOT/tutorials/$2" "$1" && (cd "$1" && "$ROOT/bin/genParticles" > log.genParticles 2>&1) \
+        && "$ROOT/bin/dictTool" "$1/system/controlDict" -set "endTime=$3" > /dev/null
+}
+# par DIR N [ARGS]: N ranks in DIR, log.par<N>
+par() {
+    local d=$1 n=$2; shift 2
+    (cd "$d" && timeout 300 mpirun -np "$n" "$MPI_FLUID" -parallel "$@" > "log.par$n" 2>&1)
+}
+# dump VTU: "id x y z ux uy uz p" sorted by id
+dump() {
+    "$ROOT/bin/vtuInfo" -dump "$1" | awk '/^# x y z/ { for (k = 1; k <= NF; k++) c[$k] = k - 1; next }
+        NF > 5 && ("id" in c) { print $c["id"], $1, $2, $3, $(c["velocity_0"]), $(c["velocity_1"]), $(c["velocity_2"]), $(c["pressure"]) }' | sort -n
+}
+# differ A B DX DP: empty when every particle of A and B (by id) agrees
+# within DX [m] in position and DP [Pa] in pressure; else what differs
+differ() {
+    local na nb
+    na=$(dump "$1" | wc -l); nb=$(dump "$2" | wc -l)
+    join <(dump "$1") <(dump "$2") | awk -v na="$na" -v nb="$nb" -v tx="$3" -v tp="$4" '
+        { n++; for (k = 2; k <= 4; k++) { e = $k - $(k + 7); e = e < 0 ? -e : e; if (e > dx) dx = e }
+          e = $8 - $15; e = e < 0 ? -e : e; if (e > dp) dp = e }
+        END { if (na != nb || n != na || na == 0) { printf "particles %d / %d, %d matched", na, nb, n; exit }
+              if (!(dx <= tx) || !(dp <= tp)) printf "max |dx| %.3g m, |dp| %.3g Pa", dx, dp }'
+}
+# series A B TOL: the largest difference of two function-object files
+# (same rows), or "rows" when their row counts differ
+series() {
+    paste "$1" "$2" | awk -v t="$3" '/^#/ { next } { h = NF / 2; for (k = 2; k <= h; k++) { e = $k - $(k + h); e = e < 0 ? -e : e; if (e > m) m = e } n++ }
+        END { if (!n) print "no rows"; else if (!(m <= t)) printf "%.3g", m }'
+}
+
+# --- damBreak2D: 1, 2, 4 ranks against one process ---------------------------
+S="$TMP/serial"
+case_copy "$S" mpsFluid/damBreak2D 0.1 || { fail mpi_same_2d "case set-up failed"; exit 1; }
+"$ROOT/bin/dictTool" "$S/system/controlDict" -set writeInterval=0.05 > /dev/null
+for n in 1 2 4; do cp -r "$S" "$TMP/np$n"; done
+(cd "$S" && "$ROOT/bin/mpsFluid" > log.mpsFluid 2>&1) || { fail mpi_same_2d "one-process run failed"; exit 1; }
+msg=""
+for n in 1 2 4; do
+    if ! par "$TMP/np$n" $n; then msg+=" np $n failed: $(grep -A1 FATAL "$TMP/np$n/log.par$n" | tail -n 1);"; continue; fi
+    d=$(differ "$S/0.1/fluid.vtu" "$TMP/np$n/0.1/fluid.vtu" 1e-5 1)
+    [ -n "$d" ] && msg+=" np $n: $d;"
+    for fo in surge column; do
+        f=$(ls "$S"/postProcessing/$fo/0/*.dat)
+        d=$(series "$f" "$TMP/np$n/${f#"$S"/}" 1e-5)
+        [ -n "$d" ] && msg+=" np $n $fo: $d;"
+    done
+done
+[ -z "$msg" ] && pass mpi_same_2d || fail mpi_same_2d "$msg"
+
+st=$(grep "distributed " "$TMP/np4/log.par4")
+mig=$(echo "$st" | sed -n 's/.* \([0-9]*\) migrations.*/\1/p')
+gh=$(echo "$st" | sed -n 's/.*ghosts per rank \([0-9.]*\) (mean).*/\1/p')
+nfl=$(awk '!/^#/ && $2 != 200 { bad++ } !/^#/ { n++ } END { print n + 0, bad + 0 }' "$TMP"/np4/postProcessing/volume/0/*.dat)
+if [ "${mig:-0}" -gt 0 ] && awk -v g="${gh:-0}" 'BEGIN { exit !(g > 0) }' && [ "${nfl#* }" = 0 ] && [ "${nfl% *}" -ge 3 ]; then
+    pass mpi_migration
+else
+    fail mpi_migration "stats '$st', volume rows/bad '$nfl'"
+fi
+
+# --- restart with another number of ranks --------------------------------------
+R="$TMP/restart"
+cp -r "$S" "$R"; rm -rf "$R"/0.* "$R"/postProcessing "$R"/*.pvd "$R"/log.*
+"$ROOT/bin/dictTool" "$R/system/controlDict" -set endTime=0.05 > /dev/null
+ok=1
+par "$R" 4 || ok=0
+"$ROOT/bin/dictTool" "$R/system/controlDict" -set endTime=0.1 -set startFrom=latestTime > /dev/null
+[ $ok = 1 ] && { par "$R" 2 || ok=0; }
+if [ $ok = 1 ]; then
+    d=$(differ "$TMP/np4/0.1/fluid.vtu" "$R/0.1/fluid.vtu" 1e-6 0.1)
+    [ -z "$d" ] && grep -q "Starting from the latest time, 0.05" "$R/log.par2" && pass mpi_restart_n \
+        || fail mpi_restart_n "${d:-no restart from 0.05}"
+else
+    fail mpi_restart_n "a run failed: $(grep -h -A1 FATAL "$R"/log.par* | tail -n 1)"
+fi
+
+# --- 3-D: Kleefsman's tank, coarse ----------------------------------------------
+K="$TMP/kleefsman"
+case_copy "$K" mpsFluid/damBreakObstacle 0.02 || { fail mpi_same_3d "case set-up failed"; exit 1; }
+"$ROOT/bin/dictTool" "$K/system/controlDict" -set writeInterval=0.02 > /dev/null
+cp -r "$K" "$K.2"
+(cd "$K" && "$ROOT/bin/mpsFluid" > log.mpsFluid 2>&1) && par "$K.2" 2
+if [ $? -eq 0 ]; then
+    d=$(differ "$K/0.02/fluid.vtu" "$K.2/0.02/fluid.vtu" 1e-5 1)
+    f=$(ls "$K"/postProcessing/load/0/*.dat)
+    fd=$(paste "$f" "$K.2/${f#"$K"/}" | awk '!/^#/ { h = NF / 2; for (k = 2; k <= h; k++) { e = $k - $(k + h); e = e < 0 ? -e : e; s = $k < 0 ? -$k : $k; if (e > 1e-4 * (s + 1)) bad++ } n++ }
+        END { if (!n || bad) print (n ? bad " values" : "no rows") }')
+    [ -z "$d$fd" ] && pass mpi_same_3d || fail mpi_same_3d "$d $fd"
+else
+    fail mpi_same_3d "a run failed: $(grep -h -A1 FATAL "$K"/log.* "$K.2"/log.* | tail -n 1)"
+fi
+
+# --- a rank killed mid-run --------------------------------------------------------
+F="$TMP/fault"
+cp -r "$K" "$F"; rm -rf "$F"/0.0* "$F"/postProcessing "$F"/*.pvd "$F"/log.*
+"$ROOT/bin/dictTool" "$F/system/controlDict" -set endTime=5 > /dev/null
+(cd "$F" && timeout 120 mpirun -np 2 "$MPI_FLUID" -parallel > log.par2 2>&1; echo $? > "$F/rc") &
+for _ in $(seq 1 120); do grep -q "^Time = " "$F/log.par2" 2>/dev/null && break; sleep 0.5; done
+victim=""
+for p in $(ps -eo pid,comm | awk '$2 == "mpsFluid" { print $1 }'); do
+    [ "$(readlink /proc/$p/cwd)" = "$F" ] && victim=$p
+done
+if [ -n "$victim" ]; then
+    kill -9 "$victim"
+    t0=$(date +%s)
+    while [ ! -s "$F/rc" ] && [ $(( $(date +%s) - t0 )) -lt 30 ]; do sleep 0.5; done
+    rc=$(cat "$F/rc" 2>/dev/null)
+    [ -n "$rc" ] && [ "$rc" -ne 0 ] && [ "$rc" -ne 124 ] && pass mpi_rank_killed \
+        || fail mpi_rank_killed "mpirun status '${rc:-none after 30 s}'"
+else
+    fail mpi_rank_killed "no rank of the run found: $(tail -n 3 "$F/log.par2")"
+fi
+wait
+
+# --- refused ----------------------------------------------------------------------
+c="$TMP/refused"
+cp -r "$S" "$c"; rm -rf "$c"/0.* "$c"/postProcessing "$c"/*.pvd "$c"/log.*
+out=$(cd "$c" && "$ROOT/bin/mpsFluid" -parallel 2>&1); rc=$?
+extra=$(cd "$c" && ls -d [0-9]* | grep -v '^0$')
+[ $rc -eq 1 ] && echo "$out" | grep -q "built without MPI.*make MPI=1" && [ -z "$extra" ] \
+    && pass mpi_refused_serial_build || fail mpi_refused_serial_build "rc $rc: $(echo "$out" | grep -A1 FATAL | tail -n 1)"
+"$ROOT/bin/dictTool" "$c/system/mpsSchemes" -set shifting=xu2009 > /dev/null
+out=$(par "$c" 2 2>&1; cat "$c/log.par2"); rc=$?
+extra=$(cd "$c" && ls -d [0-9]* | grep -v '^0$')
+echo "$out" | grep -qE "system/mpsSchemes:[0-9]+:[0-9]+: shifting other than none does not run distributed" && [ -z "$extra" ] \
+    && ! grep -q "^End" "$c/log.par2" && pass mpi_refused_shifting \
+    || fail mpi_refused_shifting "$(echo "$out" | grep -A1 FATAL | tail -n 1) time dirs '$extra'"
+C="$TMP/coupled"
+case_copy "$C" mpsDem/singleGrainSettling 0.01 || fail mpi_refused_coupled "case set-up failed"
+par "$C" 2; out=$(cat "$C/log.par2")
+extra=$(cd "$C" && ls -d [0-9]* | grep -v '^0$')
+echo "$out" | grep -q "system/couplingDict: a coupled run does not run distributed" && [ -z "$extra" ] \
+    && pass mpi_refused_coupled || fail mpi_refused_coupled "$(echo "$out" | grep -A1 FATAL | tail -n 1) time dirs '$extra'"
+exit $fails
