@@ -22,8 +22,10 @@
  * global columns, and the ranks solve it together (h->ops->solve).
  *
  * Before each step the particles that left the box escape (counted over
- * all ranks), the others migrate to the rank whose region holds them, and
- * the ghosts are copied afresh, so the neighbour list is built every step.
+ * all ranks), the regions are cut afresh when the largest rank's weight
+ * exceeds the mean by more than maxImbalance (system/decomposeParDict),
+ * the particles migrate to the rank whose region holds them, and the
+ * ghosts are copied afresh, so the neighbour list is built every step.
  */
 #include <math.h>
 #include <stdio.h>
@@ -127,6 +129,18 @@ int mps_halo_prepare(struct mps_solver *s)
                              "%g): the run is unstable or the tank is open",
                              s->n_escaped, s->n_fluid0,
                              s->S.max_escape_fraction);
+    }
+    if (h->max_imbalance > 0) {
+        /* the weights of decomposeParDict's balance: the fluid rows are
+         * the step's work; walls and dummies have rows only near water */
+        double *w = s->b;    /* free until the PPE */
+        for (int i = 0; i < h->n_own; i++)
+            w[i] = h->balance_all || P->type[i] == MPS_FLUID ? 1.0 : 0.0;
+        int done;
+        TRY(h->ops->balance(h, &P->st, w, &done));
+        if (done)
+            log_info("    regions cut afresh: a rank's weight exceeded the "
+                     "mean by more than maxImbalance %g", h->max_imbalance);
     }
     TRY(h->ops->exchange(h, &P->st));
     P->n = (int)P->st.n;

@@ -13,7 +13,9 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "core/dict.h"
 #include "core/error.h"
+#include "core/select.h"
 #include "particles/cells.h"
 
 struct key { double v; int32_t i; };
@@ -216,4 +218,32 @@ int decompose_halo(int dim, const double *x, const double *weight, int n,
     free(members);
     cells_free(&g);
     return err;
+}
+
+static const struct model_head method_rcb = {
+    "rcb", "recursive coordinate bisection, Berger & Bokhari 1987"};
+static const struct model_head *const method_table[] = { &method_rcb, NULL };
+static const char *const balance_words[] = { "fluid", "all", NULL };
+
+int decompose_settings_read(const struct dict *d, struct decompose_settings *s)
+{
+    int method;
+    TRY(dict_get_label(d, "numberOfSubdomains", &s->nparts));
+    if (!(s->nparts >= 1 && s->nparts <= 1000000))
+        return dict_error(d, "numberOfSubdomains", SIM_ERR_DICT,
+                          "numberOfSubdomains %ld must be in [1, 1000000]",
+                          s->nparts);
+    TRY(model_select_index(d, "method", "decomposition method",
+                           (const void *const *)method_table, "rcb",
+                           &method));
+    TRY(dict_get_word_or(d, "balance", balance_words, 0, &s->balance_all));
+    s->max_imbalance = 1.2;
+    if (dict_has(d, "maxImbalance")) {
+        TRY(dict_get_scalar(d, "maxImbalance", &s->max_imbalance));
+        if (!(s->max_imbalance == 0 || s->max_imbalance > 1))
+            return dict_error(d, "maxImbalance", SIM_ERR_DICT,
+                              "maxImbalance %g: give a factor > 1, or 0 "
+                              "for never", s->max_imbalance);
+    }
+    return SIM_OK;
 }

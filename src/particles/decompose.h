@@ -44,6 +44,25 @@ int decompose_rcb_cuts(int dim, const double *x, const double *weight, int n,
 int decompose_owner(const struct decompose_cut *cuts, int nparts,
                     const double *x);
 
+/* system/decomposeParDict (OpenFOAM's name; decomposePar and the
+ * distributed solvers read it):
+ *   numberOfSubdomains  N;      // >= 1
+ *   method              rcb;    // the only method
+ *   balance             fluid;  // fluid: fluid particles weigh 1, walls
+ *                               // and dummies 0; all: 1 each
+ *   maxImbalance        1.2;    // a distributed run cuts the regions
+ *                               // afresh when its largest rank's weight
+ *                               // exceeds the mean by this factor (> 1;
+ *                               // 0: never)
+ * Errors cite the file and line. */
+struct dict;
+struct decompose_settings {
+    long nparts;
+    int balance_all;
+    double max_imbalance;
+};
+int decompose_settings_read(const struct dict *d, struct decompose_settings *s);
+
 struct decompose_part {
     long owned;        /* particles                                   */
     double weight;     /* their weight                                */

@@ -41,7 +41,7 @@ struct dist {
     size_t order_cap;
     /* statistics: particles sent to another owner, ghosts held, over the
      * exchanges so far */
-    long migrated, exchanges;
+    long migrated, exchanges, balances;
     double ghost_sum;
 };
 
@@ -423,7 +423,71 @@ static int64_t exscan(struct pop_halo *h, int64_t v, int64_t *total)
     return before;
 }
 
+/* Every rank's own positions and weights on every rank (in rank order,
+ * so that each computes the same cuts). */
+static int balance(struct pop_halo *h, const struct store *st,
+                   const double *weight, int *done)
+{
+    struct dist *d = (struct dist *)h;
+    const int P = h->size, n = h->n_own;
+    double mine = 0;
+    for (int i = 0; i < n; i++)
+        mine += weight ? weight[i] : 1.0;
+    double wmax = mine, wsum = mine;
+    MPI_Allreduce(&mine, &wmax, 1, MPI_DOUBLE, MPI_MAX, d->comm);
+    MPI_Allreduce(&mine, &wsum, 1, MPI_DOUBLE, MPI_SUM, d->comm);
+    *done = 0;
+    if (!(h->max_imbalance > 0) || P == 1 || wsum <= 0
+        || wmax <= h->max_imbalance * wsum / P)
+        return SIM_OK;
+    const double *x = points(st);
+    double *mx = sim_malloc(4 * ((size_t)n + 1) * sizeof *mx);
+    if (!mx)
+        return SIM_ERR_NOMEM;
+    for (int i = 0; i < n; i++) {
+        memcpy(mx + 4 * i, x + 3 * i, 3 * sizeof *mx);
+        mx[4 * i + 3] = weight ? weight[i] : 1.0;
+    }
+    int cnt = 4 * n;
+    MPI_Allgather(&cnt, 1, MPI_INT, d->rbc, 1, MPI_INT, d->comm);
+    size_t total = 0;
+    for (int r = 0; r < P; r++) {
+        d->rbd[r] = (int)total;
+        total += (size_t)d->rbc[r];
+    }
+    double *all = sim_malloc((total + 4) * sizeof *all);
+    double *xa = sim_malloc((3 * total / 4 + 3) * sizeof *xa);
+    double *wa = sim_malloc((total / 4 + 1) * sizeof *wa);
+    int32_t *part = sim_malloc((total / 4 + 1) * sizeof *part);
+    int rc = all && xa && wa && part ? SIM_OK : SIM_ERR_NOMEM;
+    if (total > INT32_MAX)
+        rc = sim_error(SIM_ERR_INPUT, "distribute: too many particles to "
+                       "balance");
+    if (!rc) {
+        MPI_Allgatherv(mx, cnt, MPI_DOUBLE, all, d->rbc, d->rbd, MPI_DOUBLE,
+                       d->comm);
+        const size_t m = total / 4;
+        for (size_t e = 0; e < m; e++) {
+            memcpy(xa + 3 * e, all + 4 * e, 3 * sizeof *xa);
+            wa[e] = all[4 * e + 3];
+        }
+        rc = decompose_rcb_cuts(d->dim, xa, weight ? wa : NULL, (int)m, P,
+                                part, d->cuts);
+        if (!rc) {
+            d->balances++;
+            *done = 1;
+        }
+    }
+    free(mx);
+    free(all);
+    free(xa);
+    free(wa);
+    free(part);
+    return rc;
+}
+
 static const struct pop_halo_ops dist_ops = {
+    .balance = balance,
     .exchange = exchange,
     .refresh = refresh,
     .reduce = reduce,
@@ -525,7 +589,7 @@ void dist_stats(struct dist *d, struct dist_stats *out)
     MPI_Allreduce(&own, &omax, 1, MPI_DOUBLE, MPI_MAX, d->comm);
     *out = (struct dist_stats){
         .ranks = d->h.size, .migrated = m,
-        .exchanges = d->exchanges,
+        .exchanges = d->exchanges, .balances = d->balances,
         .ghosts_mean = g[1] > 0 ? g[0] / g[1] : 0, .ghosts_max = gmax,
         .own_min = (long)omin, .own_max = (long)omax };
 }

@@ -42,6 +42,13 @@ struct pop_halo_ops {
     double (*reduce)(struct pop_halo *h, double v, enum pop_reduce op);
     /* The sum of v over the ranks before this one; *total over all. */
     int64_t (*exscan)(struct pop_halo *h, int64_t v, int64_t *total);
+    /* When the largest rank's weight (per own particle; NULL: 1 each)
+     * exceeds the mean by more than h->max_imbalance, cut the regions
+     * afresh (recursive coordinate bisection of every rank's own
+     * particles); the next exchange migrates. *done: 1 when it did.
+     * Collective. */
+    int (*balance)(struct pop_halo *h, const struct store *st,
+                   const double *weight, int *done);
     /* Solve the rows [row0, row0 + A->n) of a system of nglobal unknowns
      * (A's columns global) with the solver and tolerances of ls; x holds
      * the start on entry. Collective. */
@@ -54,6 +61,10 @@ struct pop_halo {
     const struct pop_halo_ops *ops;
     int rank, size;
     int n_own;            /* particles [0, n_own) are this rank's */
+    double max_imbalance; /* balance when max/mean weight exceeds it;
+                             0: never                                  */
+    int balance_all;      /* weight 1 for every particle (else the
+                             solver's own choice, e.g. its fluid)      */
 };
 
 #endif

@@ -15,8 +15,10 @@
 #                     particle (matched by id) within the bounds of the
 #                     one-process run, the surge front and column height
 #                     within 1e-5 m at every step
-#   mpi_migration     with 4 ranks particles migrated and ghosts were held;
-#                     the fluid count stays 200 at every step
+#   mpi_migration     with 4 ranks particles migrated, ghosts were held and
+#                     the regions were cut afresh as the water moved
+#                     (maxImbalance 1.2 by default); the fluid count stays
+#                     200 in every row of the volume function object
 #   mpi_restart_n     4 ranks to 0.05 s, then 2 ranks from that state to
 #                     0.1 s: within 1e-6 m of the 4-rank run to 0.1 s
 #   mpi_same_3d       Kleefsman (dp 0.04, 44 892 particles) to 0.02 s on 2
@@ -25,8 +27,9 @@
 #   mpi_rank_killed   a rank killed (SIGKILL) mid-run: mpirun ends within
 #                     30 s with a non-zero status (no hang)
 #   mpi_refused       -parallel with the build without MPI, with shifting
-#                     (system/mpsSchemes, its line), with a coupled case:
-#                     exit 1, the message, no time directory
+#                     (system/mpsSchemes, its line), with a coupled case,
+#                     with maxImbalance 0.5 (system/decomposeParDict, its
+#                     line): exit 1, the message, no time directory
 NAME=mpiParallel; . "$(dirname "$0")/lib/case.sh"
 need_bins genParticles mpsFluid vtuInfo
 MPI_FLUID=${MPI_FLUID:-$ROOT/bin-hypre/mpsFluid}
@@ -90,8 +93,9 @@ done
 st=$(grep "distributed " "$TMP/np4/log.par4")
 mig=$(echo "$st" | sed -n 's/.* \([0-9]*\) migrations.*/\1/p')
 gh=$(echo "$st" | sed -n 's/.*ghosts per rank \([0-9.]*\) (mean).*/\1/p')
+cuts=$(echo "$st" | sed -n 's/.*regions cut afresh \([0-9]*\) times.*/\1/p')
 nfl=$(awk '!/^#/ && $2 != 200 { bad++ } !/^#/ { n++ } END { print n + 0, bad + 0 }' "$TMP"/np4/postProcessing/volume/0/*.dat)
-if [ "${mig:-0}" -gt 0 ] && awk -v g="${gh:-0}" 'BEGIN { exit !(g > 0) }' && [ "${nfl#* }" = 0 ] && [ "${nfl% *}" -ge 3 ]; then
+if [ "${mig:-0}" -gt 0 ] && [ "${cuts:-0}" -gt 0 ] && awk -v g="${gh:-0}" 'BEGIN { exit !(g > 0) }' && [ "${nfl#* }" = 0 ] && [ "${nfl% *}" -ge 3 ]; then
     pass mpi_migration
 else
     fail mpi_migration "stats '$st', volume rows/bad '$nfl'"
@@ -164,6 +168,13 @@ extra=$(cd "$c" && ls -d [0-9]* | grep -v '^0$')
 echo "$out" | grep -qE "system/mpsSchemes:[0-9]+:[0-9]+: shifting other than none does not run distributed" && [ -z "$extra" ] \
     && ! grep -q "^End" "$c/log.par2" && pass mpi_refused_shifting \
     || fail mpi_refused_shifting "$(echo "$out" | grep -A1 FATAL | tail -n 1) time dirs '$extra'"
+"$ROOT/bin/dictTool" "$c/system/mpsSchemes" -set shifting=none > /dev/null
+printf 'FoamFile { version 2.0; format ascii; class dictionary; object decomposeParDict; }\nnumberOfSubdomains 2;\nmaxImbalance 0.5;\n' \
+    > "$c/system/decomposeParDict"
+rm -f "$c/log.par2"; par "$c" 2; out=$(cat "$c/log.par2")
+extra=$(cd "$c" && ls -d [0-9]* | grep -v '^0$')
+echo "$out" | grep -qE "decomposeParDict:3:[0-9]+: maxImbalance 0.5: give a factor > 1" && [ -z "$extra" ] \
+    && pass mpi_refused_imbalance || fail mpi_refused_imbalance "$(echo "$out" | grep -A1 FATAL | tail -n 1) time dirs '$extra'"
 C="$TMP/coupled"
 case_copy "$C" mpsDem/singleGrainSettling 0.01 || fail mpi_refused_coupled "case set-up failed"
 par "$C" 2; out=$(cat "$C/log.par2")

@@ -41,6 +41,7 @@
 #include "mps/soil/soil.h"
 #include "solver/solver.h"
 #ifdef MPSDEM_HAVE_MPI
+#include "particles/decompose.h"
 #include "particles/distribute.h"
 #endif
 
@@ -357,18 +358,43 @@ static int halo_solve(struct pop_halo *h, struct linsolve *ls,
 
 /* -parallel: every rank read the whole start cloud and set the solver up
  * on it; each keeps its region's particles and the ghosts (doc/design.md
- * §8), cut by recursive coordinate bisection with every particle counted
- * once. */
+ * §8). system/decomposeParDict, when the case has one, gives what is
+ * balanced and when the regions are cut afresh (decompose.h); its
+ * numberOfSubdomains is mpirun's -np, as for OpenFOAM's solvers. */
 static int distribute(struct fluid *f)
 {
-    TRY(dist_create(MPI_COMM_WORLD, f->dim, f->s.r_list, &f->dist));
-    dist_set_solve(f->dist, halo_solve);
-    TRY(dist_split(f->dist, &f->s.P.st, NULL));
-    TRY(mps_distribute(&f->s, dist_halo(f->dist), f->schemes));
+    struct decompose_settings ds = { .nparts = 0, .balance_all = 0,
+                                     .max_imbalance = 1.2 };
+    struct dict *dec = NULL;
+    TRY(app_read_dict_optional(&f->sv.app, "system/decomposeParDict", &dec));
+    int rc = dec ? decompose_settings_read(dec, &ds) : SIM_OK;
+    if (!rc && dec && ds.nparts != f->sv.nranks)
+        log_warn("system/decomposeParDict: numberOfSubdomains %ld, but the "
+                 "run has %d ranks (mpirun -np): the particles are cut in "
+                 "%d", ds.nparts, f->sv.nranks, f->sv.nranks);
+    dict_free(dec);
+    TRY(rc);
+    struct mps_particles *P = &f->s.P;
+    double *w = sim_malloc(((size_t)P->n + 1) * sizeof *w);
+    if (!w)
+        return SIM_ERR_NOMEM;
+    for (int i = 0; i < P->n; i++)
+        w[i] = ds.balance_all || P->type[i] == MPS_FLUID ? 1.0 : 0.0;
+    rc = dist_create(MPI_COMM_WORLD, f->dim, f->s.r_list, &f->dist);
+    if (!rc) {
+        dist_set_solve(f->dist, halo_solve);
+        rc = dist_split(f->dist, &P->st, w);
+    }
+    free(w);
+    TRY(rc);
     struct pop_halo *h = dist_halo(f->dist);
-    log_info("Distributed over %d ranks: rank 0 owns %d particles and "
-             "holds %d ghosts within %g m", h->size, h->n_own,
-             f->s.P.n - h->n_own, f->s.r_list);
+    h->max_imbalance = ds.max_imbalance;
+    h->balance_all = ds.balance_all;
+    TRY(mps_distribute(&f->s, h, f->schemes));
+    log_info("Distributed over %d ranks (balance %s, maxImbalance %g): rank "
+             "0 owns %d particles and holds %d ghosts within %g m", h->size,
+             ds.balance_all ? "all" : "fluid", ds.max_imbalance, h->n_own,
+             P->n - h->n_own, f->s.r_list);
     return SIM_OK;
 }
 #endif
@@ -539,9 +565,10 @@ static void final_stats(struct solver *sv)
         dist_stats(f->dist, &d);
         log_info("    distributed           %d ranks (the numbers above: "
                  "rank 0's), own particles %ld-%ld per rank now, %ld "
-                 "migrations in %ld exchanges, ghosts per rank %.0f (mean), "
-                 "%.0f (largest rank)", d.ranks, d.own_min, d.own_max,
-                 d.migrated, d.exchanges, d.ghosts_mean, d.ghosts_max);
+                 "migrations in %ld exchanges, regions cut afresh %ld "
+                 "times, ghosts per rank %.0f (mean), %.0f (largest rank)",
+                 d.ranks, d.own_min, d.own_max, d.migrated, d.exchanges,
+                 d.balances, d.ghosts_mean, d.ghosts_max);
     }
 #endif
 }

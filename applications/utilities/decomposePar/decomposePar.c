@@ -40,11 +40,6 @@
 #include "particles/decompose.h"
 #include "particles/lattice.h"
 
-static const struct model_head method_rcb = {
-    "rcb", "recursive coordinate bisection, Berger & Bokhari 1987"};
-static const struct model_head *const method_table[] = { &method_rcb, NULL };
-static const char *const balance_words[] = { "fluid", "all", NULL };
-
 struct settings {
     long nparts;
     int balance_all;
@@ -56,9 +51,13 @@ static int read_settings(const struct app *a, const char *subdomains,
                          struct settings *s)
 {
     struct dict *dec = NULL, *pat = NULL, *tr = NULL, *sch = NULL;
+    struct decompose_settings ds;
     int rc = app_read_dict(a, "system/decomposeParDict", &dec);
-    int method;
-    if (!rc) rc = dict_get_label(dec, "numberOfSubdomains", &s->nparts);
+    if (!rc) rc = decompose_settings_read(dec, &ds);
+    if (!rc) {
+        s->nparts = ds.nparts;
+        s->balance_all = ds.balance_all;
+    }
     if (!rc && subdomains) {
         char *end;
         s->nparts = strtol(subdomains, &end, 10);
@@ -67,16 +66,8 @@ static int read_settings(const struct app *a, const char *subdomains,
                            "number", subdomains);
     }
     if (!rc && !(s->nparts >= 1 && s->nparts <= 1000000))
-        rc = subdomains ? sim_error(SIM_ERR_INPUT, "-subdomains %ld: must "
-                                    "be in [1, 1000000]", s->nparts)
-                        : dict_error(dec, "numberOfSubdomains", SIM_ERR_DICT,
-                                     "numberOfSubdomains %ld must be in "
-                                     "[1, 1000000]", s->nparts);
-    if (!rc) rc = model_select_index(dec, "method", "decomposition method",
-                                     (const void *const *)method_table,
-                                     "rcb", &method);
-    if (!rc) rc = dict_get_word_or(dec, "balance", balance_words, 0,
-                                   &s->balance_all);
+        rc = sim_error(SIM_ERR_INPUT, "-subdomains %ld: must be in [1, "
+                       "1000000]", s->nparts);
     /* the lattice (genParticles) and the list radius (mpsFluid's
      * settings: the same reading as the solver's) */
     if (!rc) rc = app_read_dict(a, "constant/particlePatches", &pat);
