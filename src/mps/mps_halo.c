@@ -21,11 +21,15 @@
  * the ghosts learn their owners' numbers, the matrix of the own rows gets
  * global columns, and the ranks solve it together (h->ops->solve).
  *
- * Before each step the particles that left the box escape (counted over
- * all ranks), the regions are cut afresh when the largest rank's weight
- * exceeds the mean by more than maxImbalance (system/decomposeParDict),
- * the particles migrate to the rank whose region holds them, and the
- * ghosts are copied afresh, so the neighbour list is built every step.
+ * Before each step the ghosts take their owners' positions and
+ * velocities. Where the neighbour list must be built again on some rank
+ * (a particle moved more than half the skin), every rank rebuilds: the
+ * particles that left the box escape (counted over all ranks), the
+ * regions are cut afresh when the largest rank's weight exceeds the mean
+ * by more than maxImbalance (system/decomposeParDict), the particles
+ * migrate to the rank whose region holds them, and the ghosts are copied
+ * afresh. Between builds the ghost sets hold for the same reason the
+ * list does: a pair within r_e now was within r_e + skin at the build.
  */
 #include <math.h>
 #include <stdio.h>
@@ -99,6 +103,15 @@ int mps_halo_prepare(struct mps_solver *s)
     if (!h)
         return SIM_OK;
     struct mps_particles *P = &s->P;
+    /* the ghosts move with their owners; while the list holds on every
+     * rank (the skin), so do the ghost sets, as the list's candidates do
+     * in one process */
+    TRY(mps_halo_refresh(s, P->x, 3 * sizeof *P->x));
+    TRY(mps_halo_refresh(s, P->u, 3 * sizeof *P->u));
+    if (s->walls_move)
+        TRY(mps_halo_refresh(s, P->normal, 3 * sizeof *P->normal));
+    if (h->ops->reduce(h, mps_list_valid(s), POP_MIN) > 0)
+        return SIM_OK;
     /* own particles outside the box escape here, as cells_build would
      * find them; the ghosts are dropped by the exchange anyway */
     int m = 0, lost = 0, ic[3];

@@ -19,6 +19,10 @@ int mps_fit_work(struct mps_solver *s);
 int mps_halo_prepare(struct mps_solver *s);
 int mps_halo_refresh(struct mps_solver *s, void *field, size_t elem);
 
+/* The list still holds every pair within r_e (no particle moved more
+ * than half the skin since it was built, no rebuild requested). */
+int mps_list_valid(const struct mps_solver *s);
+
 /* Neighbours (with removal of escaped particles and renumbering) and the
  * weights of each operator radius. */
 int mps_neighbours(struct mps_solver *s);

@@ -329,7 +329,7 @@ static void store_weights(struct mps_solver *s, enum mps_radius which,
 /* The list (radius re_max + skin) still holds every pair within re_max
  * while no particle has moved more than half the skin since the build;
  * with the predictor the step's own displacement dt |u*| counts too. */
-static int list_still_valid(const struct mps_solver *s)
+int mps_list_valid(const struct mps_solver *s)
 {
     const struct mps_particles *P = &s->P;
     double half = 0.5 * (s->r_list - s->re_max), m = 0, um = 0;
@@ -438,7 +438,7 @@ int mps_neighbours(struct mps_solver *s)
      * tolerances; with these cells the results are those of the former
      * full-list code to the bit. */
     const double cell_h = s->r_list;
-    if (list_still_valid(s)) {
+    if (mps_list_valid(s)) {
         TRY(neighbour_update(&s->nl, P->x));   /* pairs within re_max only */
         return mps_weights(s);
     }
