@@ -49,7 +49,7 @@ int mps_own(const struct mps_solver *s)
 
 /* "<file:line:col>: <what> does not run distributed ...", located at key
  * of d when the case's dictionary is at hand (d NULL or key absent: the
- * text alone). */
+ * file's name alone). */
 static int not_yet(const struct dict *d, const char *key, const char *file,
                    const char *what)
 {

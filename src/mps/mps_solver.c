@@ -134,9 +134,10 @@ int mps_check_extent(const struct mps_particles *P,
  * count changes every step); contents are per step, not kept. */
 int mps_fit_work(struct mps_solver *s)
 {
-    const size_t c = (size_t)s->P.cap, old = s->ustar ? (size_t)s->cap_work : 0;
-    if (s->ustar && c <= old && (!s->halo || s->gunk))
+    const size_t c = (size_t)s->P.cap, had = s->ustar ? (size_t)s->cap_work : 0;
+    if (s->ustar && c <= had && (!s->halo || s->gunk))
         return SIM_OK;
+    const size_t old = had < c ? had : c;
     /* grown arrays start at zero in their new part, as calloc's did */
 #define FIT(a, k) do {                                                     \
         void *t_ = sim_realloc(s->a, (k) * c * sizeof *s->a + 1);          \

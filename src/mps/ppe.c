@@ -212,7 +212,7 @@ int mps_ppe_solve(struct mps_solver *s, double dt)
     s->t.ppe_setup += s->last.setup_s;
     s->t.ppe_solve += s->last.solve_s;
     s->t.ppe_row_iters += (double)s->last.iters * m;
-    s->t.ppe_nnz_iters += (double)s->last.iters * (double)s->A.nnz;
+    s->t.ppe_nnz_iters += (double)s->last.iters * (double)s->A.rowptr[m];
 #pragma omp parallel for schedule(static)
     for (int i = 0; i < P->n; i++)
         if (P->type[i] != MPS_DUMMY)

@@ -91,7 +91,7 @@ static int create_time(struct solver *sv)
     TRY(app_read_dict_optional(&sv->app, "system/couplingDict",
                                &sv->coupling));
     TRY(couple_enabled(sv->coupling, &sv->coupled));
-    if (sv->coupled && sv->nranks > 1)
+    if (sv->coupled && sv->distributed)
         return sim_error(SIM_ERR_INPUT, "system/couplingDict: a coupled "
                          "run does not run distributed (-parallel) yet: run "
                          "%s in one process", sv->ops->name);
@@ -162,7 +162,7 @@ int solver_write(struct solver *sv, const char *prefix)
 static int failed(struct solver *sv, int rc)
 {
     char msg[1024];
-    if (sv->nranks > 1)
+    if (sv->distributed)
         return rc;   /* the ranks that did not fail cannot take part */
     snprintf(msg, sizeof msg, "%s", sim_error_message());
     if (solver_write(sv, "failed.") == SIM_OK)
@@ -253,7 +253,7 @@ static int relax(struct solver *sv, const char *arg)
         return sim_error(SIM_ERR_INPUT, "system/couplingDict: -relax runs "
                          "%s alone: set coupled no for the relaxation, and "
                          "back to yes for the run", o->name);
-    if (sv->nranks > 1)
+    if (sv->distributed)
         return sim_error(SIM_ERR_INPUT, "-relax runs in one process: run it "
                          "without -parallel, then the distributed run");
     TRY(o->rest(sv));

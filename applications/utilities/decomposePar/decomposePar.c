@@ -11,18 +11,14 @@
  *
  *   decomposePar [-case DIR] -dry-run [-time T] [-subdomains N]
  *
- * Only the dry run exists: the distributed mpsFluid that would read
- * processor directories is not part of this release, so without -dry-run
- * the program stops with that message rather than write directories
- * nothing reads. -subdomains overrides numberOfSubdomains (a scaling
- * table runs it for several N on one case).
+ * Only the dry run exists: `mpirun -np N mpsFluid -parallel` cuts the
+ * start cloud itself (the same bisection, the same dictionary), so there
+ * are no processor directories to write; without -dry-run the program
+ * says so. -subdomains overrides numberOfSubdomains (a scaling table
+ * runs it for several N on one case).
  *
- * system/decomposeParDict:
- *   numberOfSubdomains  N;       // >= 1
- *   method              rcb;     // rcb (the only method)
- *   balance             fluid;   // fluid: fluid particles weigh 1, walls
- *                                // and dummies 0 (their rows are empty
- *                                // away from the water); all: 1 each
+ * system/decomposeParDict: particles/decompose.h (maxImbalance is read
+ * and checked, and used only by the distributed run).
  */
 #include <math.h>
 #include <stdint.h>
@@ -145,9 +141,9 @@ static int report(const struct settings *s, const struct vtu_cloud *c,
                  / (double)s->nparts, nbmax, nbsum);
         log_info("time                          %.3g s bisection, %.3g s "
                  "halo", t1 - t0, t2 - t1);
-        log_info("\nDry run: nothing written (mpsFluid -parallel, which "
-                 "would read processor directories, is not in this "
-                 "release)");
+        log_info("\nDry run: nothing written (mpirun -np %ld mpsFluid "
+                 "-parallel cuts the start cloud itself, the same way)",
+                 s->nparts);
     }
     free(w);
     free(part);
@@ -171,9 +167,9 @@ int main(int argc, char **argv)
              "mpsFluid case", argc, argv, opts, 0);
     if (!dry) {
         sim_error(SIM_ERR_INPUT, "decomposePar writes no processor "
-                  "directories in this release (the distributed mpsFluid "
-                  "that would read them is not implemented): run "
-                  "`decomposePar -dry-run` for the report");
+                  "directories: `mpirun -np N mpsFluid -parallel` cuts the "
+                  "start cloud itself; run `decomposePar -dry-run` for the "
+                  "report");
         app_fatal(&app, SIM_ERR_INPUT);
     }
     struct settings s = { 0 };
