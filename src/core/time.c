@@ -37,14 +37,22 @@ static int time_dir_value(const char *name, double *v)
     return end != name && *end == '\0' && isfinite(*v);
 }
 
-/* The first of `need` that dir lacks (a regular file), or NULL. */
+/* The first of `need` that dir lacks (a regular file), or NULL. An entry
+ * "a|b" is there when either is (a cloud written whole or in pieces). */
 static const char *missing_file(const char *dir, const char *const *need)
 {
     for (; need && *need; need++) {
-        char path[4400];
-        struct stat st;
-        snprintf(path, sizeof path, "%s/%s", dir, *need);
-        if (stat(path, &st) != 0 || !S_ISREG(st.st_mode))
+        const char *alt = *need;
+        int found = 0;
+        while (!found && *alt) {
+            size_t len = strcspn(alt, "|");
+            char path[4400];
+            struct stat st;
+            snprintf(path, sizeof path, "%s/%.*s", dir, (int)len, alt);
+            found = stat(path, &st) == 0 && S_ISREG(st.st_mode);
+            alt += len + (alt[len] == '|');
+        }
+        if (!found)
             return *need;
     }
     return NULL;
@@ -354,13 +362,19 @@ void time_increment(struct run_time *t)
     time_name(t->value, t->precision, t->name, sizeof t->name);
 }
 
-int time_make_dir(const struct run_time *t, const char *case_dir,
-                  const char *prefix, char *dir, size_t n)
+void time_dir_path(const struct run_time *t, const char *case_dir,
+                   const char *prefix, char *dir, size_t n)
 {
     if (!strcmp(case_dir, "."))
         snprintf(dir, n, "%s%s", prefix, t->name);
     else
         snprintf(dir, n, "%s/%s%s", case_dir, prefix, t->name);
+}
+
+int time_make_dir(const struct run_time *t, const char *case_dir,
+                  const char *prefix, char *dir, size_t n)
+{
+    time_dir_path(t, case_dir, prefix, dir, n);
     if (mkdir(dir, 0777) != 0 && errno != EEXIST)
         return sim_error(SIM_ERR_IO, "cannot create time directory '%s': %s",
                          dir, strerror(errno));

@@ -55,8 +55,8 @@ struct run_time {
 
 /* Read controlDict (startFrom latestTime looks into case_dir for the newest
  * time directory that holds every file of `need`, a NULL-terminated list
- * such as { "fluid.vtu", "dem.vtu", NULL } for a coupled run, after
- * time_clean_debris). Errors name the file and line: endTime < startTime,
+ * such as { "fluid.vtu", "dem.vtu", NULL } for a coupled run; an entry
+ * "fluid.vtu|fluid.pvtu" takes either file, after time_clean_debris). Errors name the file and line: endTime < startTime,
  * deltaT <= 0, writeInterval <= 0, no time directory for latestTime. */
 int time_read(const struct dict *control, const char *case_dir,
               const char *const *need, struct run_time *t);
@@ -95,6 +95,9 @@ void time_increment(struct run_time *t);
  * which latestTime never takes); path into dir. */
 int time_make_dir(const struct run_time *t, const char *case_dir,
                   const char *prefix, char *dir, size_t n);
+/* Its path alone (the ranks of a distributed run that do not create it). */
+void time_dir_path(const struct run_time *t, const char *case_dir,
+                   const char *prefix, char *dir, size_t n);
 
 /* Remove dir if it is empty: after a write into it failed. */
 void time_dir_discard(const char *dir);

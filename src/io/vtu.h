@@ -41,7 +41,8 @@ struct vtu_cloud {
 int vtu_write(const char *path, const struct vtu_cloud *c, int binary);
 
 /* Read a file written by vtu_write (or any vtu with one piece of point data
- * in ascii or inline base64 binary, UInt32 or UInt64 headers). Allocates
+ * in ascii or inline base64 binary, UInt32 or UInt64 headers), or a .pvtu
+ * of such pieces (pvtu_read). Allocates
  * every array; release with vtu_cloud_free. A truncated or corrupted file is
  * SIM_ERR_IO with the file name and what was wrong. */
 int vtu_read(const char *path, struct vtu_cloud *c);
@@ -70,6 +71,15 @@ int vtu_cloud_add_field(struct vtu_cloud *c, const char *name,
 /* Add (or replace, for the same time) the data set `file` (path relative to
  * the .pvd's directory) at `time` in the collection `pvd_path`, creating it
  * if needed; entries stay sorted by time. Rewritten atomically. */
+/* The parallel form (pvtu.c): a .pvtu naming npieces pieces
+ * (piece_fmt % p, relative to the .pvtu, e.g. "fluid_%d.vtu") that hold
+ * the arrays of layout (names, types, components; its data unused). */
+int pvtu_write(const char *path, const struct vtu_cloud *layout, int npieces,
+               const char *piece_fmt);
+/* Every piece of a .pvtu in order as one cloud (vtu_read does this for a
+ * path ending in .pvtu). The pieces must hold the same arrays. */
+int pvtu_read(const char *path, struct vtu_cloud *c);
+
 int pvd_add(const char *pvd_path, double time, const char *file);
 
 /* Drop entries with time > t_max (a restart from an earlier time). */

@@ -492,6 +492,9 @@ static int read_piece(const struct reader *r, xmlNodePtr grid,
 
 int vtu_read(const char *path, struct vtu_cloud *c)
 {
+    const size_t len = strlen(path);
+    if (len > 5 && !strcmp(path + len - 5, ".pvtu"))
+        return pvtu_read(path, c);
     struct reader r = { path, 4 };
     xmlDocPtr doc;
     xmlNodePtr grid = NULL;

@@ -98,7 +98,9 @@ static int create_time(struct solver *sv)
     if (sv->coupled && !sv->ops->coupling)
         return sim_error(SIM_ERR_INPUT, "system/couplingDict: %s cannot "
                          "run coupled", sv->ops->name);
-    snprintf(own, sizeof own, "%s.vtu", sv->ops->cloud);
+    /* a distributed run writes the cloud in pieces (<cloud>.pvtu) */
+    snprintf(own, sizeof own, sv->ops->parallel ? "%1$s.vtu|%1$s.pvtu"
+             : "%s.vtu", sv->ops->cloud);
     snprintf(peer, sizeof peer, "%s.vtu",
              sv->ops->peer_cloud ? sv->ops->peer_cloud : "");
     const char *const alone[] = { own, NULL };
@@ -118,6 +120,18 @@ static int create_functions(struct solver *sv)
                           sv->rt.precision, &sv->fos);
 }
 
+/* "<t>/<cloud>.vtu" of the current time, relative to the case, or its
+ * .pvtu where that is what the time holds (a distributed run's). */
+static const char *cloud_file(const struct solver *sv, char *buf, size_t n)
+{
+    char path[4400];
+    snprintf(buf, n, "%s/%s.pvtu", sv->rt.name, sv->ops->cloud);
+    app_path(&sv->app, buf, path, sizeof path);
+    if (access(path, F_OK) != 0)
+        snprintf(buf, n, "%s/%s.vtu", sv->rt.name, sv->ops->cloud);
+    return buf;
+}
+
 static const char *pvd_path(const struct solver *sv, char *buf, size_t n)
 {
     char rel[96];
@@ -135,26 +149,35 @@ static int start_output(struct solver *sv)
     pvd_path(sv, pvd, sizeof pvd);
     if (access(pvd, F_OK) == 0)
         TRY(pvd_truncate(pvd, sv->rt.value));
-    snprintf(rel, sizeof rel, "%s/%s.vtu", sv->rt.name, sv->ops->cloud);
-    TRY(pvd_add(pvd, sv->rt.value, rel));
+    TRY(pvd_add(pvd, sv->rt.value, cloud_file(sv, rel, sizeof rel)));
     return app_write_used_parameters(&sv->app);
 }
 
 int solver_write(struct solver *sv, const char *prefix)
 {
     char dir[4200], pvd[4200], rel[256];
-    if (!root(sv))
-        return sv->ops->write(sv, NULL);
-    TRY(time_make_dir(&sv->rt, sv->app.case_abs, prefix, dir, sizeof dir));
-    int rc = sv->ops->write(sv, dir);
+    int rc = SIM_OK;
+    if (root(sv))
+        rc = time_make_dir(&sv->rt, sv->app.case_abs, prefix, dir, sizeof dir);
+    else
+        time_dir_path(&sv->rt, sv->app.case_abs, prefix, dir, sizeof dir);
+#ifdef MPSDEM_HAVE_MPI
+    /* the other ranks write their pieces into the directory rank 0 made */
+    if (sv->distributed)
+        MPI_Bcast(&rc, 1, MPI_INT, 0, MPI_COMM_WORLD);
+#endif
+    if (rc)
+        return rc;
+    rc = sv->ops->write(sv, dir);
     if (rc) {
-        time_dir_discard(dir);
+        if (root(sv))
+            time_dir_discard(dir);
         return rc;
     }
-    if (prefix[0])
+    if (prefix[0] || !root(sv))
         return SIM_OK;
-    snprintf(rel, sizeof rel, "%s/%s.vtu", sv->rt.name, sv->ops->cloud);
-    return pvd_add(pvd_path(sv, pvd, sizeof pvd), sv->rt.value, rel);
+    return pvd_add(pvd_path(sv, pvd, sizeof pvd), sv->rt.value,
+                   cloud_file(sv, rel, sizeof rel));
 }
 
 /* A failed advance (PPE not converged, NaN, too many escapes): keep the

@@ -20,7 +20,11 @@
 #                     (maxImbalance 1.2 by default); the fluid count stays
 #                     200 in every row of the volume function object
 #   mpi_restart_n     4 ranks to 0.05 s, then 2 ranks from that state to
-#                     0.1 s: within 1e-6 m of the 4-rank run to 0.1 s
+#                     0.1 s: within 1e-6 m of the 4-rank run to 0.1 s; a
+#                     distributed run writes <t>/fluid.pvtu with one piece
+#                     fluid_<rank>.vtu per rank, listed in fluid.pvd
+#   mpi_restart_serial  one process (bin/mpsFluid) from the 4 pieces at
+#                     0.05 s to 0.1 s: within 1e-6 m of the 2-rank run
 #   mpi_same_3d       Kleefsman (dp 0.04, 44 892 particles) to 0.02 s on 2
 #                     ranks: within the bounds, force on the box within
 #                     1e-4 of the one-process value
@@ -80,7 +84,9 @@ for n in 1 2 4; do cp -r "$S" "$TMP/np$n"; done
 msg=""
 for n in 1 2 4; do
     if ! par "$TMP/np$n" $n; then msg+=" np $n failed: $(grep -A1 FATAL "$TMP/np$n/log.par$n" | tail -n 1);"; continue; fi
-    d=$(differ "$S/0.1/fluid.vtu" "$TMP/np$n/0.1/fluid.vtu" 1e-5 1)
+    d=$(differ "$S/0.1/fluid.vtu" "$TMP/np$n/0.1/fluid.pvtu" 1e-5 1)
+    ls "$TMP/np$n"/0.1/fluid_*.vtu 2> /dev/null | wc -l | grep -qx "$n" || d+=" not $n pieces in 0.1/;"
+    grep -q 'file="0.1/fluid.pvtu"' "$TMP/np$n/fluid.pvd" || d+=" 0.1/fluid.pvtu not in fluid.pvd;"
     [ -n "$d" ] && msg+=" np $n: $d;"
     for fo in surge column; do
         f=$(ls "$S"/postProcessing/$fo/0/*.dat)
@@ -110,12 +116,20 @@ par "$R" 4 || ok=0
 "$ROOT/bin/dictTool" "$R/system/controlDict" -set endTime=0.1 -set startFrom=latestTime > /dev/null
 [ $ok = 1 ] && { par "$R" 2 || ok=0; }
 if [ $ok = 1 ]; then
-    d=$(differ "$TMP/np4/0.1/fluid.vtu" "$R/0.1/fluid.vtu" 1e-6 0.1)
+    d=$(differ "$TMP/np4/0.1/fluid.pvtu" "$R/0.1/fluid.pvtu" 1e-6 0.1)
     [ -z "$d" ] && grep -q "Starting from the latest time, 0.05" "$R/log.par2" && pass mpi_restart_n \
         || fail mpi_restart_n "${d:-no restart from 0.05}"
 else
     fail mpi_restart_n "a run failed: $(grep -h -A1 FATAL "$R"/log.par* | tail -n 1)"
 fi
+
+# --- one process goes on from the pieces of a distributed run ----------------
+Q="$TMP/serial_from_pieces"
+cp -r "$R" "$Q"; rm -rf "$Q"/0.1 "$Q"/log.*
+(cd "$Q" && "$ROOT/bin/mpsFluid" > log.mpsFluid 2>&1)
+d=$(differ "$R/0.1/fluid.pvtu" "$Q/0.1/fluid.vtu" 1e-6 0.1)
+[ -f "$Q/0.1/fluid.vtu" ] && [ -z "$d" ] && grep -q "Fluid cloud 0.05/fluid.pvtu" "$Q/log.mpsFluid" \
+    && pass mpi_restart_serial || fail mpi_restart_serial "${d:-no restart from 0.05/fluid.pvtu: $(grep -A1 FATAL "$Q/log.mpsFluid" | tail -n 1)}"
 
 # --- 3-D: Kleefsman's tank, coarse ----------------------------------------------
 K="$TMP/kleefsman"
@@ -124,7 +138,7 @@ case_copy "$K" mpsFluid/damBreakObstacle 0.02 || { fail mpi_same_3d "case set-up
 cp -r "$K" "$K.2"
 (cd "$K" && "$ROOT/bin/mpsFluid" > log.mpsFluid 2>&1) && par "$K.2" 2
 if [ $? -eq 0 ]; then
-    d=$(differ "$K/0.02/fluid.vtu" "$K.2/0.02/fluid.vtu" 1e-5 1)
+    d=$(differ "$K/0.02/fluid.vtu" "$K.2/0.02/fluid.pvtu" 1e-5 1)
     f=$(ls "$K"/postProcessing/load/0/*.dat)
     fd=$(paste "$f" "$K.2/${f#"$K"/}" | awk '!/^#/ { h = NF / 2; for (k = 2; k <= h; k++) { e = $k - $(k + h); e = e < 0 ? -e : e; s = $k < 0 ? -$k : $k; if (e > 1e-4 * (s + 1)) bad++ } n++ }
         END { if (!n || bad) print (n ? bad " values" : "no rows") }')

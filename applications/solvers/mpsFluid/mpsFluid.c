@@ -12,6 +12,10 @@
  * Writes  <time>/fluid.vtu, fluid.pvd, postProcessing/<functionObject>/,
  *         postProcessing/usedParameters/mpsFluid
  *
+ * With -parallel (MPI build; doc/design.md §8) the ranks share the
+ * particles (particles/distribute.h, mps_halo.c) and each time holds
+ * <time>/fluid.pvtu with one piece fluid_<rank>.vtu per rank.
+ *
  * Every key: mpsFluid.reference beside this file.
  *
  * Coupled (system/couplingDict present, `coupled yes`; runTandem mpsFluid
@@ -317,8 +321,13 @@ static int create_fluid(struct fluid *f)
                           "in the x-y plane, e.g. (0 -9.81 0)");
     TRY(dict_get_dict(f->solution, "PPE", &ppe));
     TRY(linsolve_create(ppe, &ls));
+    /* the whole cloud, or the pieces of a distributed run */
     snprintf(rel, sizeof rel, "%s/fluid.vtu", f->sv.rt.name);
     app_path(&f->sv.app, rel, path, sizeof path);
+    if (access(path, F_OK) != 0) {
+        snprintf(rel, sizeof rel, "%s/fluid.pvtu", f->sv.rt.name);
+        app_path(&f->sv.app, rel, path, sizeof path);
+    }
     rc = vtu_read(path, &c);
     if (!rc)
         rc = vtu_check_finite(&c, path);
@@ -469,13 +478,42 @@ static int create(struct solver *sv)
 }
 
 /* fluid.vtu into dir: the time directory or failed.<t>/. */
+#ifdef MPSDEM_HAVE_MPI
+/* A distributed run writes its own particles as piece <rank> of
+ * <dir>/fluid.pvtu (doc/design.md §8); the ranks agree on the outcome. */
+static int write_pieces(struct fluid *f, const char *dir)
+{
+    struct pop_halo *h = dist_halo(f->dist);
+    struct vtu_cloud piece;
+    char path[4400];
+    store_cloud(&f->s.P.st, f->sv.rt.value, f->fields, &piece);
+    piece.n = (size_t)h->n_own;       /* own particles come first */
+    snprintf(path, sizeof path, "%s/fluid_%d.vtu", dir, h->rank);
+    int rc = vtu_write(path, &piece, f->sv.rt.binary);
+    if (!rc && h->rank == 0) {
+        snprintf(path, sizeof path, "%s/fluid.pvtu", dir);
+        rc = pvtu_write(path, &piece, h->size, "fluid_%d.vtu");
+        snprintf(path, sizeof path, "%s/fluid.vtu", dir);
+        unlink(path);                 /* a whole cloud of an earlier run */
+    }
+    if (h->ops->reduce(h, rc != SIM_OK, POP_MAX) > 0 && !rc)
+        rc = sim_error(SIM_ERR_IO, "%s: another rank could not write its "
+                       "piece of fluid.pvtu", dir);
+    return rc;
+}
+#endif
+
 static int write_fields(struct solver *sv, const char *dir)
 {
     struct fluid *f = (struct fluid *)sv;
     char path[4400];
+#ifdef MPSDEM_HAVE_MPI
+    if (f->dist)
+        return write_pieces(f, dir);
+#endif
     TRY(refresh_scene(sv));
-    if (!dir)
-        return SIM_OK;    /* a rank other than 0 of a distributed run */
+    snprintf(path, sizeof path, "%s/fluid.pvtu", dir);
+    unlink(path);                     /* the pieces of an earlier run */
     snprintf(path, sizeof path, "%s/fluid.vtu", dir);
     return vtu_write(path, &f->cloud, sv->rt.binary);
 }

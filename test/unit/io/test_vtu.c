@@ -220,6 +220,66 @@ static void round_trip(int binary)
 }
 
 static void test_round_trip_binary(void **state) { (void)state; round_trip(1); }
+
+/* A .pvtu of pieces of 0, 3 and 1000 particles reads as the cloud of all
+ * (in piece order, the first piece's time); pieces with other arrays, a
+ * missing piece and a .pvtu without pieces are refused with the file. */
+static void test_pvtu(void **state)
+{
+    (void)state;
+    static const size_t sizes[] = { 0, 3, 1000 };
+    struct vtu_cloud whole, part, r;
+    char path[128];
+    make_cloud(&whole, 1003);
+    size_t first = 0;
+    for (int p = 0; p < 3; p++) {
+        char name[32];
+        make_cloud(&part, sizes[p]);
+        /* piece p: particles [first, first + size) of the whole */
+        memcpy(part.points, whole.points + 3 * first,
+               3 * sizes[p] * sizeof(double));
+        for (int k = 0; k < part.nfields; k++) {
+            size_t e = (size_t)part.fields[k].ncomp
+                     * (part.fields[k].type == VTU_FLOAT64
+                        || part.fields[k].type == VTU_INT64 ? 8
+                        : part.fields[k].type == VTU_INT32 ? 4 : 1);
+            memcpy(part.fields[k].data, (char *)whole.fields[k].data
+                   + e * first, e * sizes[p]);
+        }
+        snprintf(name, sizeof name, "piece_%d.vtu", p);
+        path_in(path, sizeof path, name);
+        assert_int_equal(vtu_write(path, &part, p == 1 ? 0 : 1), SIM_OK);
+        first += sizes[p];
+        vtu_cloud_free(&part);
+    }
+    path_in(path, sizeof path, "whole.pvtu");
+    assert_int_equal(pvtu_write(path, &whole, 3, "piece_%d.vtu"), SIM_OK);
+    assert_int_equal(vtu_read(path, &r), SIM_OK);
+    assert_same_cloud(&whole, &r);
+    vtu_cloud_free(&r);
+    /* four pieces named, the fourth missing */
+    assert_int_equal(pvtu_write(path, &whole, 4, "piece_%d.vtu"), SIM_OK);
+    assert_int_equal(vtu_read(path, &r), SIM_ERR_IO);
+    assert_non_null(strstr(sim_error_message(), "piece_3.vtu"));
+    /* a piece with an array less */
+    make_cloud(&part, 2);
+    part.nfields--;
+    path_in(path, sizeof path, "piece_1.vtu");
+    assert_int_equal(vtu_write(path, &part, 1), SIM_OK);
+    part.nfields++;
+    vtu_cloud_free(&part);
+    path_in(path, sizeof path, "whole.pvtu");
+    assert_int_equal(pvtu_write(path, &whole, 3, "piece_%d.vtu"), SIM_OK);
+    assert_int_equal(vtu_read(path, &r), SIM_ERR_IO);
+    assert_non_null(strstr(sim_error_message(), "piece piece_1.vtu has 4 "
+                                                "arrays"));
+    /* no pieces */
+    assert_int_equal(pvtu_write(path, &whole, 0, "piece_%d.vtu"), SIM_OK);
+    assert_int_equal(vtu_read(path, &r), SIM_ERR_IO);
+    assert_non_null(strstr(sim_error_message(), "no Piece"));
+    vtu_cloud_free(&whole);
+    assert_int_equal(count_tmp(), 0);
+}
 static void test_round_trip_ascii(void **state) { (void)state; round_trip(0); }
 
 /* The binary payload follows doc/libraries.md §3: no line breaks inside the
@@ -595,6 +655,7 @@ int main(void)
         cmocka_unit_test(test_missing_file),
         cmocka_unit_test(test_failed_write_cleans_up),
         cmocka_unit_test(test_add_field_checks),
+        cmocka_unit_test(test_pvtu),
         cmocka_unit_test(test_pvd),
         cmocka_unit_test(test_pvd_corrupted),
     };
