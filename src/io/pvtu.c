@@ -26,13 +26,14 @@ int pvtu_write(const char *path, const struct vtu_cloud *layout, int npieces,
     TRY(xml_out_open(&o, path));
     xmlTextWriterPtr w = o.w;
     xml_out_check(&o, xmlTextWriterStartElement(w, BAD_CAST "VTKFile"));
-    xml_out_check(&o, xmlTextWriterWriteAttribute(w, BAD_CAST "type",
-                                                  BAD_CAST "PUnstructuredGrid"));
+    xml_out_check(&o, xmlTextWriterWriteAttribute(
+                          w, BAD_CAST "type", BAD_CAST "PUnstructuredGrid"));
     xml_out_check(&o, xmlTextWriterWriteAttribute(w, BAD_CAST "version",
                                                   BAD_CAST "0.1"));
     xml_out_check(&o, xmlTextWriterWriteAttribute(
                           w, BAD_CAST "byte_order", BAD_CAST "LittleEndian"));
-    xml_out_check(&o, xmlTextWriterStartElement(w, BAD_CAST "PUnstructuredGrid"));
+    xml_out_check(&o, xmlTextWriterStartElement(
+                          w, BAD_CAST "PUnstructuredGrid"));
     xml_out_check(&o, xmlTextWriterWriteAttribute(w, BAD_CAST "GhostLevel",
                                                   BAD_CAST "0"));
     xml_out_check(&o, xmlTextWriterStartElement(w, BAD_CAST "PPointData"));
@@ -40,11 +41,13 @@ int pvtu_write(const char *path, const struct vtu_cloud *layout, int npieces,
         const struct vtu_field *f = &layout->fields[k];
         xml_out_check(&o, xmlTextWriterStartElement(w, BAD_CAST "PDataArray"));
         xml_out_check(&o, xmlTextWriterWriteAttribute(
-                              w, BAD_CAST "type", BAD_CAST type_names[f->type]));
+                              w, BAD_CAST "type",
+                              BAD_CAST type_names[f->type]));
         xml_out_check(&o, xmlTextWriterWriteAttribute(w, BAD_CAST "Name",
                                                       BAD_CAST f->name));
         xml_out_check(&o, xmlTextWriterWriteFormatAttribute(
-                              w, BAD_CAST "NumberOfComponents", "%d", f->ncomp));
+                              w, BAD_CAST "NumberOfComponents", "%d",
+                              f->ncomp));
         xml_out_check(&o, xmlTextWriterEndElement(w));
     }
     xml_out_check(&o, xmlTextWriterEndElement(w));
@@ -124,7 +127,8 @@ int pvtu_read(const char *path, struct vtu_cloud *c)
         snprintf(dir, sizeof dir, "%.*s", (int)(slash - path), path);
     for (xmlNodePtr p = grid ? grid->children : NULL; p && !rc; p = p->next) {
         char src[1024], file[5200];
-        if (p->type != XML_ELEMENT_NODE || strcmp((const char *)p->name, "Piece"))
+        if (p->type != XML_ELEMENT_NODE
+            || strcmp((const char *)p->name, "Piece"))
             continue;
         if (xml_attr(p, "Source", src, sizeof src) != 1 || !src[0]) {
             rc = sim_error(SIM_ERR_IO, "%s: a Piece without Source", path);

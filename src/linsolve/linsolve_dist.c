@@ -31,16 +31,6 @@
 #include "core/log.h"
 #include "linsolve/linsolve_impl.h"
 
-static int check(HYPRE_Int err, const char *what)
-{
-    if (!err)
-        return SIM_OK;
-    char msg[256] = "";
-    HYPRE_DescribeError(err, msg);
-    HYPRE_ClearAllErrors();
-    return sim_error(SIM_ERR_EXTERNAL, "hypre %s failed: %s", what, msg);
-}
-
 enum { K_PCG, K_BICGSTAB, K_GMRES };
 enum { P_NONE, P_JACOBI, P_AMG };
 
@@ -63,34 +53,6 @@ static void choose(const struct linsolve *s, int *krylov, int *pc)
     }
 }
 
-static void amg_settings(HYPRE_Solver amg)
-{
-    HYPRE_BoomerAMGSetCoarsenType(amg, 10);   /* HMIS           */
-    HYPRE_BoomerAMGSetInterpType(amg, 6);     /* extended+i     */
-    HYPRE_BoomerAMGSetPMaxElmts(amg, 4);
-    HYPRE_BoomerAMGSetStrongThreshold(amg, 0.25);
-    HYPRE_BoomerAMGSetRelaxType(amg, 6);      /* hybrid sym. GS */
-    HYPRE_BoomerAMGSetNumSweeps(amg, 1);
-    HYPRE_BoomerAMGSetMaxIter(amg, 1);
-    HYPRE_BoomerAMGSetTol(amg, 0.0);
-    HYPRE_BoomerAMGSetPrintLevel(amg, 0);
-}
-
-static int vector(MPI_Comm comm, HYPRE_BigInt lo, int n, const HYPRE_BigInt *rows,
-                  const double *v, HYPRE_IJVector *out, HYPRE_ParVector *par)
-{
-    TRY(check(HYPRE_IJVectorCreate(comm, lo, lo + n - 1, out), "vector"));
-    HYPRE_IJVectorSetObjectType(*out, HYPRE_PARCSR);
-    HYPRE_IJVectorInitialize(*out);
-    if (n > 0)
-        HYPRE_IJVectorSetValues(*out, n, rows, v);
-    TRY(check(HYPRE_IJVectorAssemble(*out), "vector assemble"));
-    void *obj;
-    HYPRE_IJVectorGetObject(*out, &obj);
-    *par = obj;
-    return SIM_OK;
-}
-
 /* Krylov solver k with preconditioner p on (a, b, x); iterations in *its. */
 static int krylov_solve(MPI_Comm comm, int k, int p, const struct linsolve *s,
                         double tol, HYPRE_ParCSRMatrix a, HYPRE_ParVector b,
@@ -100,7 +62,7 @@ static int krylov_solve(MPI_Comm comm, int k, int p, const struct linsolve *s,
     HYPRE_PtrToSolverFcn ps = NULL, pset = NULL;
     if (p == P_AMG) {
         HYPRE_BoomerAMGCreate(&amg);
-        amg_settings(amg);
+        hypre_amg_settings(amg);
         ps = (HYPRE_PtrToSolverFcn)HYPRE_BoomerAMGSolve;
         pset = (HYPRE_PtrToSolverFcn)HYPRE_BoomerAMGSetup;
     } else if (p == P_JACOBI) {
@@ -148,7 +110,7 @@ static int krylov_solve(MPI_Comm comm, int k, int p, const struct linsolve *s,
         HYPRE_BoomerAMGDestroy(amg);
     *its = (int)n;
     if (err && !HYPRE_CheckError(err, HYPRE_ERROR_CONV))
-        return check(err, "Krylov solve");
+        return hypre_check(err, "Krylov solve");
     HYPRE_ClearAllErrors();    /* not converged: the residual check says */
     return SIM_OK;
 }
@@ -182,7 +144,7 @@ int linsolve_solve_dist(struct linsolve *s, MPI_Comm comm,
     }
     static int hypre_ready;
     if (!hypre_ready) {
-        TRY(check(HYPRE_Init(), "HYPRE_Init"));
+        TRY(hypre_check(HYPRE_Init(), "HYPRE_Init"));
         hypre_ready = 1;
     }
     int krylov, pc;
@@ -204,22 +166,23 @@ int linsolve_solve_dist(struct linsolve *s, MPI_Comm comm,
     }
     for (int64_t k = 0; k < A->nnz; k++)
         cols[k] = A->col[k];
-    TRY_GOTO(rc, check(HYPRE_IJMatrixCreate(comm, lo, lo + n - 1, lo,
+    TRY_GOTO(rc, hypre_check(HYPRE_IJMatrixCreate(comm, lo, lo + n - 1, lo,
                                             lo + n - 1, &ij), "matrix"), out);
     HYPRE_IJMatrixSetObjectType(ij, HYPRE_PARCSR);
     HYPRE_IJMatrixSetRowSizes(ij, ncols);
     HYPRE_IJMatrixInitialize(ij);
     if (n > 0)
-        TRY_GOTO(rc, check(HYPRE_IJMatrixSetValues(ij, n, ncols, rows, cols,
-                                                   A->val), "matrix values"),
-                 out);
-    TRY_GOTO(rc, check(HYPRE_IJMatrixAssemble(ij), "matrix assemble"), out);
+        TRY_GOTO(rc, hypre_check(HYPRE_IJMatrixSetValues(ij, n, ncols, rows,
+                                                         cols, A->val),
+                                 "matrix values"), out);
+    TRY_GOTO(rc, hypre_check(HYPRE_IJMatrixAssemble(ij), "matrix assemble"),
+             out);
     void *obj;
     HYPRE_IJMatrixGetObject(ij, &obj);
     pa = obj;
-    TRY_GOTO(rc, vector(comm, lo, n, rows, b, &bij, &pb), out);
-    TRY_GOTO(rc, vector(comm, lo, n, rows, x, &xij, &px), out);
-    TRY_GOTO(rc, vector(comm, lo, n, rows, b, &rij, &pr), out);
+    TRY_GOTO(rc, hypre_vector(comm, lo, n, rows, b, &bij, &pb), out);
+    TRY_GOTO(rc, hypre_vector(comm, lo, n, rows, x, &xij, &px), out);
+    TRY_GOTO(rc, hypre_vector(comm, lo, n, rows, b, &rij, &pr), out);
     double t1 = app_wall_time();
     st->setup_s = t1 - t0;
     int its = 0;

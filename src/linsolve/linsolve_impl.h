@@ -193,4 +193,19 @@ double vec_dot(int n, const double *a, const double *b);
 void vec_copy(int n, const double *a, double *b);
 void vec_zero(int n, double *a);
 
+#ifdef MPSDEM_HAVE_HYPRE
+#include <HYPRE.h>
+#include <HYPRE_parcsr_ls.h>
+/* solver_hypre.c, shared with the distributed solve (linsolve_dist.c): a
+ * hypre error as our SIM_ERR_EXTERNAL naming `what`, BoomerAMG as one
+ * preconditioning V-cycle with the settings of the benchmark, vectors. */
+#include <mpi.h>
+int hypre_check(HYPRE_Int err, const char *what);
+void hypre_amg_settings(HYPRE_Solver amg);
+/* The IJ vector of rows [lo, lo + n) of comm holding v. */
+int hypre_vector(MPI_Comm comm, HYPRE_BigInt lo, int n,
+                 const HYPRE_BigInt *rows, const double *v,
+                 HYPRE_IJVector *out, HYPRE_ParVector *par);
+#endif
+
 #endif

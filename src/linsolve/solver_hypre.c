@@ -46,7 +46,8 @@ const struct solver_ops solver_hypre = {
 #include <mpi.h>
 
 struct hypre_state {
-    int *rows, *ncols; /* n: row numbers and lengths for IJ SetValues */
+    HYPRE_BigInt *rows; /* n: row numbers for IJ SetValues             */
+    HYPRE_Int *ncols;   /* n: row lengths                             */
     int n_cap;
 };
 
@@ -60,7 +61,7 @@ static void finalize_mpi(void)
     }
 }
 
-static int check(HYPRE_Int err, const char *what)
+int hypre_check(HYPRE_Int err, const char *what)
 {
     if (!err)
         return SIM_OK;
@@ -77,7 +78,7 @@ static int init(struct linsolve *s)
     if (!flag) {
         if (MPI_Init(NULL, NULL) != MPI_SUCCESS)
             return sim_error(SIM_ERR_EXTERNAL, "hypre: MPI_Init failed");
-        TRY(check(HYPRE_Init(), "HYPRE_Init"));
+        TRY(hypre_check(HYPRE_Init(), "HYPRE_Init"));
         atexit(finalize_mpi);
     }
     s->ext = sim_calloc(1, sizeof(struct hypre_state));
@@ -95,14 +96,17 @@ static void fini(struct linsolve *s)
     }
 }
 
-static int make_vector(int n, const int *rows, const double *v,
-                       HYPRE_IJVector *out, HYPRE_ParVector *par)
+int hypre_vector(MPI_Comm comm, HYPRE_BigInt lo, int n,
+                 const HYPRE_BigInt *rows, const double *v,
+                 HYPRE_IJVector *out, HYPRE_ParVector *par)
 {
-    TRY(check(HYPRE_IJVectorCreate(MPI_COMM_SELF, 0, n - 1, out), "vector"));
+    TRY(hypre_check(HYPRE_IJVectorCreate(comm, lo, lo + n - 1, out),
+                    "vector"));
     HYPRE_IJVectorSetObjectType(*out, HYPRE_PARCSR);
     HYPRE_IJVectorInitialize(*out);
-    HYPRE_IJVectorSetValues(*out, n, rows, v);
-    TRY(check(HYPRE_IJVectorAssemble(*out), "vector assemble"));
+    if (n > 0)
+        HYPRE_IJVectorSetValues(*out, n, rows, v);
+    TRY(hypre_check(HYPRE_IJVectorAssemble(*out), "vector assemble"));
     void *obj;
     HYPRE_IJVectorGetObject(*out, &obj);
     *par = obj;
@@ -116,21 +120,21 @@ static int make_matrix(struct hypre_state *h, const struct csr_matrix *A,
     if (A->nnz > 2147483647)
         return sim_error(SIM_ERR_INPUT, "hypre: too many non-zeros for its "
                          "32-bit indices");
-    TRY(check(HYPRE_IJMatrixCreate(MPI_COMM_SELF, 0, n - 1, 0, n - 1, out),
-              "matrix"));
+    TRY(hypre_check(HYPRE_IJMatrixCreate(MPI_COMM_SELF, 0, n - 1, 0, n - 1,
+                                         out), "matrix"));
     HYPRE_IJMatrixSetObjectType(*out, HYPRE_PARCSR);
     HYPRE_IJMatrixSetRowSizes(*out, h->ncols);
     HYPRE_IJMatrixInitialize(*out);
-    TRY(check(HYPRE_IJMatrixSetValues(*out, n, h->ncols, h->rows, A->col,
+    TRY(hypre_check(HYPRE_IJMatrixSetValues(*out, n, h->ncols, h->rows, A->col,
                                       A->val), "matrix values"));
-    TRY(check(HYPRE_IJMatrixAssemble(*out), "matrix assemble"));
+    TRY(hypre_check(HYPRE_IJMatrixAssemble(*out), "matrix assemble"));
     void *obj;
     HYPRE_IJMatrixGetObject(*out, &obj);
     *par = obj;
     return SIM_OK;
 }
 
-static void amg_settings(HYPRE_Solver amg)
+void hypre_amg_settings(HYPRE_Solver amg)
 {
     HYPRE_BoomerAMGSetCoarsenType(amg, 10);   /* HMIS           */
     HYPRE_BoomerAMGSetInterpType(amg, 6);     /* extended+i     */
@@ -170,8 +174,8 @@ static int solve(struct linsolve *s, const struct csr_matrix *A,
     HYPRE_ParVector pb = NULL, px = NULL;
     HYPRE_Solver pcg = NULL, amg = NULL;
     TRY_GOTO(rc, make_matrix(h, A, &ij, &pa), out);
-    TRY_GOTO(rc, make_vector(n, h->rows, b, &bij, &pb), out);
-    TRY_GOTO(rc, make_vector(n, h->rows, x, &xij, &px), out);
+    TRY_GOTO(rc, hypre_vector(MPI_COMM_SELF, 0, n, h->rows, b, &bij, &pb), out);
+    TRY_GOTO(rc, hypre_vector(MPI_COMM_SELF, 0, n, h->rows, x, &xij, &px), out);
     double bnorm = sqrt(vec_dot(n, b, b));
     HYPRE_ParCSRPCGCreate(MPI_COMM_SELF, &pcg);
     HYPRE_PCGSetTol(pcg, tolabs / bnorm);
@@ -179,14 +183,14 @@ static int solve(struct linsolve *s, const struct csr_matrix *A,
     HYPRE_PCGSetMaxIter(pcg, s->maxiter);
     HYPRE_PCGSetPrintLevel(pcg, 0);
     HYPRE_BoomerAMGCreate(&amg);
-    amg_settings(amg);
+    hypre_amg_settings(amg);
     HYPRE_PCGSetPrecond(pcg, (HYPRE_PtrToSolverFcn)HYPRE_BoomerAMGSolve,
                         (HYPRE_PtrToSolverFcn)HYPRE_BoomerAMGSetup, amg);
-    TRY_GOTO(rc, check(HYPRE_ParCSRPCGSetup(pcg, pa, pb, px), "PCG setup"),
-             out);
+    TRY_GOTO(rc, hypre_check(HYPRE_ParCSRPCGSetup(pcg, pa, pb, px),
+                             "PCG setup"), out);
     HYPRE_Int err = HYPRE_ParCSRPCGSolve(pcg, pa, pb, px);
     if (err && !HYPRE_CheckError(err, HYPRE_ERROR_CONV))
-        TRY_GOTO(rc, check(err, "PCG solve"), out);
+        TRY_GOTO(rc, hypre_check(err, "PCG solve"), out);
     HYPRE_ClearAllErrors(); /* not converged: the facade reports it */
     HYPRE_Int its = 0;
     HYPRE_PCGGetNumIterations(pcg, &its);

@@ -259,23 +259,18 @@ static int migrate(struct dist *d, struct store *st)
     const size_t n = st->n;
     const double *x = points(st);
     TRY(grow_idx(d, n));
-    for (int r = 0; r < P; r++)
-        d->scount[r] = 0;
-    size_t m = 0;
-    for (size_t i = 0; i < n; i++) {
-        int o = decompose_owner(d->cuts, P, x + 3 * i);
-        d->dest[i] = o;
-        d->scount[o]++;
-        if (o == me)
-            d->keep[m++] = (int32_t)i;
-    }
-    d->scount[me] = 0;
     if (n + 1 > d->send_cap) {
         int32_t *s = sim_realloc(d->send_idx, (n + 1) * sizeof *s);
         if (!s)
             return SIM_ERR_NOMEM;
         d->send_idx = s;
         d->send_cap = n + 1;
+    }
+    for (int r = 0; r < P; r++)
+        d->scount[r] = 0;
+    for (size_t i = 0; i < n; i++) {
+        d->dest[i] = decompose_owner(d->cuts, P, x + 3 * i);
+        d->scount[d->dest[i]] += d->dest[i] != me;
     }
     int off = 0;
     for (int r = 0; r < P; r++) {
@@ -287,33 +282,16 @@ static int migrate(struct dist *d, struct store *st)
     for (size_t i = 0; i < n; i++)
         if (d->dest[i] != me)
             d->send_idx[fill[d->dest[i]]++] = (int32_t)i;
-    /* pack before the compaction moves them */
-    const size_t R = record_size(st);
-    TRY(grow(&d->sbuf, &d->scap, (size_t)off * R));
-    for (int e = 0; e < off; e++)
-        pack(st, (size_t)d->send_idx[e], d->sbuf + (size_t)e * R, NULL);
-    compact_raw(st, d->keep, m);
     d->migrated += off;
-    MPI_Alltoall(d->scount, 1, MPI_INT, d->rcount, 1, MPI_INT, d->comm);
-    size_t nr = 0;
-    for (int r = 0; r < P; r++) {
-        d->rdispl[r] = (int)nr;
-        nr += (size_t)d->rcount[r];
-        d->bc[r] = d->scount[r] * (int)R;
-        d->bd[r] = d->sdispl[r] * (int)R;
-        d->rbc[r] = d->rcount[r] * (int)R;
-        d->rbd[r] = d->rdispl[r] * (int)R;
-    }
-    if (((size_t)off + nr) * R > INT32_MAX)
-        return sim_error(SIM_ERR_INPUT, "distribute: more than 2 GB to "
-                         "migrate in one message");
-    TRY(grow(&d->rbuf, &d->rcap, nr * R));
-    MPI_Alltoallv(d->sbuf, d->bc, d->bd, MPI_BYTE, d->rbuf, d->rbc, d->rbd,
-                  MPI_BYTE, d->comm);
-    TRY(store_reserve(st, m + nr + (m + nr) / 8));
-    TRY(store_resize(st, m + nr));
-    for (size_t e = 0; e < nr; e++)
-        unpack(st, m + e, d->rbuf + e * R);
+    /* the newcomers are appended; then the leavers go */
+    TRY(swap_records(d, st, d->send_idx, d->scount, d->sdispl, d->rcount,
+                     d->rdispl));
+    TRY(grow_idx(d, st->n));
+    size_t m = 0;
+    for (size_t i = 0; i < st->n; i++)
+        if (i >= n || d->dest[i] == me)
+            d->keep[m++] = (int32_t)i;
+    compact_raw(st, d->keep, m);
     return SIM_OK;
 }
 

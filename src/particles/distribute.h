@@ -54,8 +54,9 @@ int dist_split(struct dist *d, struct store *st, const double *weight);
 int dist_gather(struct dist *d, const struct store *st, struct store **whole);
 
 /* What the run cost in messages (collective): particles migrated over
- * all ranks, the times the regions were cut afresh, the ghosts a rank held per exchange (mean over the ranks and
- * the exchanges, and the largest rank's mean), own particles now. */
+ * all ranks, the times the regions were cut afresh, the ghosts a rank
+ * held per exchange (mean over the ranks and the exchanges, and the
+ * largest rank's mean), own particles now. */
 struct dist_stats {
     int ranks;
     long migrated, exchanges, balances;
