@@ -83,8 +83,10 @@ int time_latest(const char *case_dir, const char *const *need, double *t,
             /* Remembered to be reported if newer than the one chosen. */
             if (nskip < 8) {
                 size_t k = strlen(skipped);
-                snprintf(skipped + k, sizeof skipped - k, "%s%s (no %s)",
-                         nskip ? ", " : "", e->d_name, lack);
+                /* "a|b" names its first form, the usual one */
+                snprintf(skipped + k, sizeof skipped - k, "%s%s (no %.*s)",
+                         nskip ? ", " : "", e->d_name,
+                         (int)strcspn(lack, "|"), lack);
                 skip_t[nskip] = v;
             }
             nskip++;

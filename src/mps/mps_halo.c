@@ -92,6 +92,12 @@ int mps_distribute(struct mps_solver *s, struct pop_halo *h,
     s->halo = h;
     s->S.renumber_interval = 0;   /* the own particles stay first */
     s->rebuild = 1;
+    /* the whole cloud's list goes (its storage would stay as the run's
+     * peak on every rank); the first step builds this rank's */
+    const double r_inner = s->nl.r_inner;
+    neighbour_free(&s->nl);
+    s->nl.r_inner = r_inner;
+    s->nl.measure_r = s->S.measure_r;
     s->P.n = (int)s->P.st.n;
     s->P.cap = (int)s->P.st.cap;
     return mps_fit_work(s);

@@ -322,10 +322,10 @@ static int create_fluid(struct fluid *f)
     TRY(dict_get_dict(f->solution, "PPE", &ppe));
     TRY(linsolve_create(ppe, &ls));
     /* the whole cloud, or the pieces of a distributed run */
-    snprintf(rel, sizeof rel, "%s/fluid.vtu", f->sv.rt.name);
+    snprintf(rel, sizeof rel, "%s/fluid.pvtu", f->sv.rt.name);
     app_path(&f->sv.app, rel, path, sizeof path);
     if (access(path, F_OK) != 0) {
-        snprintf(rel, sizeof rel, "%s/fluid.pvtu", f->sv.rt.name);
+        snprintf(rel, sizeof rel, "%s/fluid.vtu", f->sv.rt.name);
         app_path(&f->sv.app, rel, path, sizeof path);
     }
     rc = vtu_read(path, &c);
