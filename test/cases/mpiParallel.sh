@@ -30,6 +30,9 @@
 #                     1e-4 of the one-process value
 #   mpi_rank_killed   a rank killed (SIGKILL) mid-run: mpirun ends within
 #                     30 s with a non-zero status (no hang)
+#   mpi_runParallel   RunFunctions' runParallel takes the ranks from
+#                     system/decomposeParDict (2), logs to log.mpsFluid and
+#                     refuses to run again while that log exists
 #   mpi_refused       -parallel with the build without MPI, with shifting
 #                     (system/mpsSchemes, its line), with a coupled case,
 #                     with maxImbalance 0.5 (system/decomposeParDict, its
@@ -168,6 +171,17 @@ else
     fail mpi_rank_killed "no rank of the run found: $(tail -n 3 "$F/log.par2")"
 fi
 wait
+
+# --- runParallel (RunFunctions, as OpenFOAM's) ------------------------------------
+RP="$TMP/runParallel"
+cp -r "$S" "$RP"; rm -rf "$RP"/0.* "$RP"/postProcessing "$RP"/*.pvd "$RP"/log.*
+"$ROOT/bin/dictTool" "$RP/system/controlDict" -set endTime=0.01 -set writeInterval=0.01 > /dev/null
+printf 'FoamFile { version 2.0; format ascii; class dictionary; object decomposeParDict; }\nnumberOfSubdomains 2;\n' \
+    > "$RP/system/decomposeParDict"
+out=$(cd "$RP" && . "$ROOT/bin/tools/RunFunctions" && runParallel mpsFluid && runParallel mpsFluid 2>&1); rc=$?
+[ $rc -eq 0 ] && echo "$out" | grep -q "using 2 processes" && echo "$out" | grep -q "already run" \
+    && grep -q "Distributed over 2 ranks" "$RP/log.mpsFluid" && [ -f "$RP/0.01/fluid.pvtu" ] \
+    && pass mpi_runParallel || fail mpi_runParallel "rc $rc: $(echo "$out" | tail -n 2 | tr '\n' ' ')"
 
 # --- refused ----------------------------------------------------------------------
 c="$TMP/refused"
