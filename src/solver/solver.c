@@ -99,8 +99,11 @@ static int create_time(struct solver *sv)
         return sim_error(SIM_ERR_INPUT, "system/couplingDict: %s cannot "
                          "run coupled", sv->ops->name);
     /* a distributed run writes the cloud in pieces (<cloud>.pvtu) */
-    snprintf(own, sizeof own, sv->ops->parallel ? "%1$s.vtu|%1$s.pvtu"
-             : "%s.vtu", sv->ops->cloud);
+    if (sv->ops->parallel)
+        snprintf(own, sizeof own, "%s.vtu|%s.pvtu", sv->ops->cloud,
+                 sv->ops->cloud);
+    else
+        snprintf(own, sizeof own, "%s.vtu", sv->ops->cloud);
     snprintf(peer, sizeof peer, "%s.vtu",
              sv->ops->peer_cloud ? sv->ops->peer_cloud : "");
     const char *const alone[] = { own, NULL };
