@@ -15,10 +15,6 @@
 #include "io/vtu.h"
 #include "io/xmlio.h"
 
-static const char *const type_names[] = { "Float64", "Int64", "Int32",
-                                          "UInt8" };
-static const size_t type_sizes[] = { 8, 8, 4, 1 };
-
 int pvtu_write(const char *path, const struct vtu_cloud *layout, int npieces,
                const char *piece_fmt)
 {
@@ -42,7 +38,7 @@ int pvtu_write(const char *path, const struct vtu_cloud *layout, int npieces,
         xml_out_check(&o, xmlTextWriterStartElement(w, BAD_CAST "PDataArray"));
         xml_out_check(&o, xmlTextWriterWriteAttribute(
                               w, BAD_CAST "type",
-                              BAD_CAST type_names[f->type]));
+                              BAD_CAST vtu_type_name(f->type)));
         xml_out_check(&o, xmlTextWriterWriteAttribute(w, BAD_CAST "Name",
                                                       BAD_CAST f->name));
         xml_out_check(&o, xmlTextWriterWriteFormatAttribute(
@@ -83,8 +79,9 @@ static int append(struct vtu_cloud *a, const struct vtu_cloud *b,
             || f->ncomp != g->ncomp)
             return sim_error(SIM_ERR_IO, "%s: piece %s: array %d is '%s' "
                              "(%s x %d), in the first piece '%s' (%s x %d)",
-                             path, src, k, g->name, type_names[g->type],
-                             g->ncomp, f->name, type_names[f->type],
+                             path, src, k, g->name,
+                             vtu_type_name(g->type), g->ncomp, f->name,
+                             vtu_type_name(f->type),
                              f->ncomp);
     }
     const size_t n = a->n + b->n;
@@ -95,7 +92,7 @@ static int append(struct vtu_cloud *a, const struct vtu_cloud *b,
     a->points = x;
     for (int k = 0; k < a->nfields; k++) {
         struct vtu_field *f = &a->fields[k];
-        const size_t e = type_sizes[f->type] * (size_t)f->ncomp;
+        const size_t e = vtu_type_size(f->type) * (size_t)f->ncomp;
         char *d = sim_realloc(f->data, e * (n + 1));
         if (!d)
             return SIM_ERR_NOMEM;

@@ -40,6 +40,10 @@ struct vtu_cloud {
  * arrays are borrowed, not freed. */
 int vtu_write(const char *path, const struct vtu_cloud *c, int binary);
 
+/* "Float64", "Int64", "Int32", "UInt8", and bytes per value. */
+const char *vtu_type_name(enum vtu_type t);
+size_t vtu_type_size(enum vtu_type t);
+
 /* Read a file written by vtu_write (or any vtu with one piece of point data
  * in ascii or inline base64 binary, UInt32 or UInt64 headers), or a .pvtu
  * of such pieces (pvtu_read). Allocates

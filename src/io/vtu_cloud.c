@@ -11,6 +11,16 @@ static const char *const type_names[] = { "Float64", "Int64", "Int32",
                                           "UInt8" };
 static const size_t type_sizes[] = { 8, 8, 4, 1 };
 
+const char *vtu_type_name(enum vtu_type t)
+{
+    return type_names[t];
+}
+
+size_t vtu_type_size(enum vtu_type t)
+{
+    return type_sizes[t];
+}
+
 void vtu_cloud_free(struct vtu_cloud *c)
 {
     if (!c)

@@ -34,7 +34,6 @@ enum src_type { SRC_FLOAT64, SRC_INT64, SRC_INT32, SRC_UINT8, SRC_FLOAT32 };
 static const char *const src_names[] = { "Float64", "Int64", "Int32", "UInt8",
                                          "Float32", NULL };
 static const size_t src_sizes[] = { 8, 8, 4, 1, 4 };
-static const size_t dst_sizes[] = { 8, 8, 4, 1 };
 
 /* What is known about the file while reading it. */
 struct reader {
@@ -330,7 +329,7 @@ static int read_array(const struct reader *r, xmlNodePtr node,
                          a.count, n);
     }
     *type = dst_of(a.src);
-    *data = sim_malloc(a.count * dst_sizes[*type]);
+    *data = sim_malloc(a.count * vtu_type_size(*type));
     if (!*data) {
         xmlFree(copy);
         return SIM_ERR_NOMEM;

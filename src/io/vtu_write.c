@@ -30,9 +30,6 @@
 #define ASCII_CHARS 26      /* room per value: 24 characters + blank   */
 #define TEXT_SIZE (ASCII_BLOCK * ASCII_CHARS) /* > b64 of one CHUNK    */
 
-static const char *const type_names[] = { "Float64", "Int64", "Int32",
-                                          "UInt8" };
-static const size_t type_sizes[] = { 8, 8, 4, 1 };
 
 /* A payload: borrowed bytes, or values made on demand (the cell arrays:
  * connectivity i, end offsets i + 1, cell types VTK_VERTEX = 1). */
@@ -71,7 +68,7 @@ static int format_value(const struct payload *p, size_t i, char *s)
 {
     unsigned char b[8];
     const unsigned char *v = b;
-    size_t es = type_sizes[p->type];
+    size_t es = vtu_type_size(p->type);
 
     if (p->data)
         v = p->data + es * i;
@@ -116,7 +113,7 @@ static size_t format_range(const struct payload *p, size_t first,
  * and handed to the writer in order. */
 static void emit_ascii(struct emitter *e, const struct payload *p)
 {
-    size_t nval = p->nbytes / type_sizes[p->type];
+    size_t nval = p->nbytes / vtu_type_size(p->type);
 
     for (size_t b0 = 0; b0 < nval && !e->o->failed; b0 += ASCII_BLOCK) {
         size_t nb = nval - b0 < ASCII_BLOCK ? nval - b0 : ASCII_BLOCK;
@@ -141,7 +138,7 @@ static void emit_ascii(struct emitter *e, const struct payload *p)
 
 static void emit_binary(struct emitter *e, const struct payload *p)
 {
-    size_t esize = type_sizes[p->type];
+    size_t esize = vtu_type_size(p->type);
     uint64_t header = p->nbytes;
     char hb[16];
 
@@ -175,7 +172,8 @@ static void write_array(struct emitter *e, const char *name,
 
     xml_out_check(e->o, xmlTextWriterStartElement(w, BAD_CAST "DataArray"));
     xml_out_check(e->o, xmlTextWriterWriteAttribute(
-                            w, BAD_CAST "type", BAD_CAST type_names[p->type]));
+                            w, BAD_CAST "type",
+                            BAD_CAST vtu_type_name(p->type)));
     if (name)
         xml_out_check(e->o, xmlTextWriterWriteAttribute(w, BAD_CAST "Name",
                                                         BAD_CAST name));
@@ -263,7 +261,7 @@ static void write_point_data(struct emitter *e, const struct vtu_cloud *c,
     for (int i = 0; i < c->nfields; i++) {
         const struct vtu_field *f = &c->fields[i];
         struct payload p = { f->type, f->ncomp,
-                             c->n * (size_t)f->ncomp * type_sizes[f->type],
+                             c->n * (size_t)f->ncomp * vtu_type_size(f->type),
                              f->data, GEN_NONE };
         write_array(e, f->name, &p, binary);
     }

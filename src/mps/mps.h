@@ -286,6 +286,12 @@ int mps_settings_read(const struct dict *transport, const struct dict *g,
 int mps_distribute(struct mps_solver *s, struct pop_halo *h,
                    const struct dict *schemes);
 
+/* The weights of decomposeParDict's balance (particles/decompose.h) for
+ * particles [0, n): fluid particles 1, walls and dummies 0 (their rows
+ * exist only near water), or 1 each with all. */
+void mps_balance_weights(const struct mps_particles *P, int n, int all,
+                         double *w);
+
 /* The particles this process owns: [0, mps_own(s)). */
 int mps_own(const struct mps_solver *s);
 

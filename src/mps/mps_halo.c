@@ -94,10 +94,7 @@ int mps_distribute(struct mps_solver *s, struct pop_halo *h,
     s->rebuild = 1;
     /* the whole cloud's list goes (its storage would stay as the run's
      * peak on every rank); the first step builds this rank's */
-    const double r_inner = s->nl.r_inner;
-    neighbour_free(&s->nl);
-    s->nl.r_inner = r_inner;
-    s->nl.measure_r = s->S.measure_r;
+    mps_drop_list(s);
     s->P.n = (int)s->P.st.n;
     s->P.cap = (int)s->P.st.cap;
     return mps_fit_work(s);
@@ -116,7 +113,7 @@ int mps_halo_prepare(struct mps_solver *s)
     TRY(mps_halo_refresh(s, P->u, 3 * sizeof *P->u));
     if (s->walls_move)
         TRY(mps_halo_refresh(s, P->normal, 3 * sizeof *P->normal));
-    if (h->ops->reduce(h, mps_list_valid(s), POP_MIN) > 0)
+    if (pop_halo_reduce1(h, mps_list_valid(s), POP_MIN) > 0)
         return SIM_OK;
     /* own particles outside the box escape here, as cells_build would
      * find them; the ghosts are dropped by the exchange anyway */
@@ -135,26 +132,14 @@ int mps_halo_prepare(struct mps_solver *s)
         P->n = m;
         h->n_own = own;
     }
-    long all = (long)h->ops->reduce(h, lost, POP_SUM);
-    if (all) {
-        s->n_escaped += all;
-        log_info("    %ld fluid particle(s) left the domain [%g %g %g] - "
-                 "[%g %g %g] and were removed (%ld in total)", all,
-                 s->box_lo[0], s->box_lo[1], s->box_lo[2], s->box_hi[0],
-                 s->box_hi[1], s->box_hi[2], s->n_escaped);
-        if (s->n_escaped > s->S.max_escape_fraction * s->n_fluid0)
-            return sim_error(SIM_ERR_INPUT, "%ld of %d fluid particles have "
-                             "left the domain (more than maxEscapeFraction "
-                             "%g): the run is unstable or the tank is open",
-                             s->n_escaped, s->n_fluid0,
-                             s->S.max_escape_fraction);
-    }
+    long all = (long)pop_halo_reduce1(h, lost, POP_SUM);
+    if (all)
+        TRY(mps_escaped(s, all));
     if (h->max_imbalance > 0) {
         /* the weights of decomposeParDict's balance: the fluid rows are
          * the step's work; walls and dummies have rows only near water */
         double *w = s->b;    /* free until the PPE */
-        for (int i = 0; i < h->n_own; i++)
-            w[i] = h->balance_all || P->type[i] == MPS_FLUID ? 1.0 : 0.0;
+        mps_balance_weights(P, h->n_own, h->balance_all, w);
         int done;
         TRY(h->ops->balance(h, &P->st, w, &done));
         if (done)
@@ -166,6 +151,13 @@ int mps_halo_prepare(struct mps_solver *s)
     P->cap = (int)P->st.cap;
     s->rebuild = 1;
     return mps_fit_work(s);
+}
+
+void mps_balance_weights(const struct mps_particles *P, int n, int all,
+                         double *w)
+{
+    for (int i = 0; i < n; i++)
+        w[i] = all || P->type[i] == MPS_FLUID ? 1.0 : 0.0;
 }
 
 int mps_halo_refresh(struct mps_solver *s, void *field, size_t elem)

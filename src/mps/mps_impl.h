@@ -19,6 +19,14 @@ int mps_fit_work(struct mps_solver *s);
 int mps_halo_prepare(struct mps_solver *s);
 int mps_halo_refresh(struct mps_solver *s, void *field, size_t elem);
 
+/* lost fluid particles have left the box (and were removed): counted,
+ * logged; SIM_ERR_INPUT beyond maxEscapeFraction. */
+int mps_escaped(struct mps_solver *s, long lost);
+
+/* Free the neighbour list's storage (its settings stay); the next step
+ * builds it again. */
+void mps_drop_list(struct mps_solver *s);
+
 /* The list still holds every pair within r_e (no particle moved more
  * than half the skin since it was built, no rebuild requested). */
 int mps_list_valid(const struct mps_solver *s);

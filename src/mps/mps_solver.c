@@ -228,10 +228,7 @@ int mps_solver_init(struct mps_solver *s, struct mps_particles *P,
     s->n_thin_walls = mps_thin_walls(s);
     /* the setup list's rows (every wall and dummy) outnumber those of the
      * run's lists: its storage goes, so that it does not set the peak */
-    const double r_inner = s->nl.r_inner;
-    neighbour_free(&s->nl);
-    s->nl.r_inner = r_inner;
-    s->nl.measure_r = s->S.measure_r;
+    mps_drop_list(s);
     /* From here on only particles that can see water within the list
      * radius get rows (list_rows); the list is built again on the same
      * grid, order unchanged. */
@@ -428,6 +425,30 @@ static int build_list(struct mps_solver *s)
     return SIM_OK;
 }
 
+int mps_escaped(struct mps_solver *s, long lost)
+{
+    const struct mps_settings *S = &s->S;
+    s->n_escaped += lost;
+    log_info("    %ld fluid particle(s) left the domain [%g %g %g] - "
+             "[%g %g %g] and were removed (%ld in total)", lost,
+             s->box_lo[0], s->box_lo[1], s->box_lo[2], s->box_hi[0],
+             s->box_hi[1], s->box_hi[2], s->n_escaped);
+    if (s->n_escaped > S->max_escape_fraction * s->n_fluid0)
+        return sim_error(SIM_ERR_INPUT, "%ld of %d fluid particles have "
+                         "left the domain (more than maxEscapeFraction "
+                         "%g): the run is unstable or the tank is open",
+                         s->n_escaped, s->n_fluid0, S->max_escape_fraction);
+    return SIM_OK;
+}
+
+void mps_drop_list(struct mps_solver *s)
+{
+    const double r_inner = s->nl.r_inner;
+    neighbour_free(&s->nl);
+    s->nl.r_inner = r_inner;
+    s->nl.measure_r = s->S.measure_r;
+}
+
 int mps_neighbours(struct mps_solver *s)
 {
     struct mps_particles *P = &s->P;
@@ -451,17 +472,7 @@ int mps_neighbours(struct mps_solver *s)
     if (s->grid.n_outside) {
         int lost;
         TRY(mps_particles_drop_outside(s, &lost));
-        s->n_escaped += lost;
-        log_info("    %d fluid particle(s) left the domain [%g %g %g] - "
-                 "[%g %g %g] and were removed (%ld in total)", lost,
-                 s->box_lo[0], s->box_lo[1], s->box_lo[2], s->box_hi[0],
-                 s->box_hi[1], s->box_hi[2], s->n_escaped);
-        if (s->n_escaped > S->max_escape_fraction * s->n_fluid0)
-            return sim_error(SIM_ERR_INPUT, "%ld of %d fluid particles have "
-                             "left the domain (more than maxEscapeFraction "
-                             "%g): the run is unstable or the tank is open",
-                             s->n_escaped, s->n_fluid0,
-                             S->max_escape_fraction);
+        TRY(mps_escaped(s, lost));
         TRY(cells_build(&s->grid, P->dim, P->x, P->n, cell_h, s->box_lo,
                         s->box_hi));
     }

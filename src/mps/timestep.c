@@ -44,7 +44,7 @@ double mps_propose_dt(const struct mps_solver *s, double max_co)
      * not its owner's (mps_halo.c) */
     double u = pop_max_norm3(mps_own(s), s->P.u, s->P.type, MPS_FLUID);
     if (s->halo)
-        u = s->halo->ops->reduce(s->halo, u, POP_MAX);
+        u = pop_halo_reduce1(s->halo, u, POP_MAX);
     return pop_stable_dt(s->dp, nu_max(&s->S), u, gnorm(&s->S), max_co);
 }
 

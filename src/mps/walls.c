@@ -132,7 +132,8 @@ void mps_wall_forces(const struct mps_solver *s, int npatch, double *force)
     const struct mps_particles *P = &s->P;
     double area = P->dim == 3 ? s->dp * s->dp : s->dp;
     memset(force, 0, sizeof *force * 3 * (size_t)npatch);
-    for (int i = 0; i < mps_own(s); i++) {
+    const int n = mps_own(s);
+    for (int i = 0; i < n; i++) {
         int k = P->patch[i];
         if (P->type[i] != MPS_WALL || k < 0 || k >= npatch)
             continue;

@@ -27,7 +27,7 @@ struct dist {
     int *scount, *sdispl, *rcount, *rdispl;
     int *bc, *bd, *rbc, *rbd;     /* the same in bytes (scratch)       */
     int32_t *send_idx, *dest, *keep;
-    size_t send_cap, dest_cap;
+    size_t send_cap, dest_cap, keep_cap;
     char *sbuf, *rbuf;
     size_t scap, rcap;
     int32_t *map;                 /* id -> local index                 */
@@ -108,34 +108,11 @@ static void unpack(struct store *st, size_t i, const char *in)
     }
 }
 
-static int grow(char **buf, size_t *cap, size_t want)
-{
-    if (want <= *cap)
-        return SIM_OK;
-    size_t c = want + want / 4 + 64;
-    char *b = sim_realloc(*buf, c);
-    if (!b)
-        return SIM_ERR_NOMEM;
-    *buf = b;
-    *cap = c;
-    return SIM_OK;
-}
-
+/* Room for n entries in each per-particle list (sim_reserve). */
 static int grow_idx(struct dist *d, size_t n)
 {
-    if (n <= d->dest_cap)
-        return SIM_OK;
-    size_t c = n + n / 4 + 16;
-    int32_t *a = sim_realloc(d->dest, c * sizeof *a);
-    if (a)
-        d->dest = a;
-    int32_t *b = sim_realloc(d->keep, c * sizeof *b);
-    if (b)
-        d->keep = b;
-    if (!a || !b)
-        return SIM_ERR_NOMEM;
-    d->dest_cap = c;
-    return SIM_OK;
+    TRY(sim_reserve((void **)&d->dest, &d->dest_cap, n, sizeof *d->dest));
+    return sim_reserve((void **)&d->keep, &d->keep_cap, n, sizeof *d->keep);
 }
 
 /* Index fields of particles [0, n) from local indices to ids. Ids must
@@ -174,13 +151,8 @@ static int ids_to_index(struct dist *d, struct store *st)
     int64_t top = -1;
     for (size_t i = 0; i < st->n; i++)
         top = ids[i] > top ? ids[i] : top;
-    if ((size_t)(top + 1) > d->map_cap) {
-        int32_t *m = sim_realloc(d->map, (size_t)(top + 1) * sizeof *m);
-        if (!m)
-            return SIM_ERR_NOMEM;
-        d->map = m;
-        d->map_cap = (size_t)(top + 1);
-    }
+    TRY(sim_reserve((void **)&d->map, &d->map_cap, (size_t)(top + 1),
+                    sizeof *d->map));
     for (int64_t q = 0; q <= top; q++)
         d->map[q] = -1;
     for (size_t i = 0; i < st->n; i++)
@@ -195,23 +167,6 @@ static int ids_to_index(struct dist *d, struct store *st)
                 v[i] = v[i] <= top ? d->map[v[i]] : -1;
     }
     return SIM_OK;
-}
-
-/* Keep the increasing list keep[0, m) in place (records as they are:
- * store_compact would remap index fields that hold ids now). */
-static void compact_raw(struct store *st, const int32_t *keep, size_t m)
-{
-    for (int k = 0; k < st->nfields; k++) {
-        const struct store_field *f = &st->f[k];
-        if (!travels(f))
-            continue;
-        char *b = *f->ref;
-        for (size_t e = 0; e < m; e++)
-            if ((size_t)keep[e] != e)
-                memcpy(b + e * f->elem, b + (size_t)keep[e] * f->elem,
-                       f->elem);
-    }
-    st->n = m;
 }
 
 /* Send the particles listed per destination (list grouped by rank,
@@ -232,8 +187,8 @@ static int swap_records(struct dist *d, struct store *st, const int32_t *list,
             return sim_error(SIM_ERR_INPUT, "distribute: more than 2 GB "
                              "to exchange in one message");
     }
-    TRY(grow(&d->sbuf, &d->scap, ns * R));
-    TRY(grow(&d->rbuf, &d->rcap, nr * R));
+    TRY(sim_reserve((void **)&d->sbuf, &d->scap, ns * R, 1));
+    TRY(sim_reserve((void **)&d->rbuf, &d->rcap, nr * R, 1));
     for (size_t e = 0; e < ns; e++)
         pack(st, (size_t)list[e], d->sbuf + e * R, NULL);
     for (int r = 0; r < P; r++) {
@@ -259,13 +214,8 @@ static int migrate(struct dist *d, struct store *st)
     const size_t n = st->n;
     const double *x = points(st);
     TRY(grow_idx(d, n));
-    if (n + 1 > d->send_cap) {
-        int32_t *s = sim_realloc(d->send_idx, (n + 1) * sizeof *s);
-        if (!s)
-            return SIM_ERR_NOMEM;
-        d->send_idx = s;
-        d->send_cap = n + 1;
-    }
+    TRY(sim_reserve((void **)&d->send_idx, &d->send_cap, n + 1,
+                    sizeof *d->send_idx));
     for (int r = 0; r < P; r++)
         d->scount[r] = 0;
     for (size_t i = 0; i < n; i++) {
@@ -291,7 +241,7 @@ static int migrate(struct dist *d, struct store *st)
     for (size_t i = 0; i < st->n; i++)
         if (i >= n || d->dest[i] == me)
             d->keep[m++] = (int32_t)i;
-    compact_raw(st, d->keep, m);
+    TRY(store_compact_unmapped(st, d->keep, m));
     return SIM_OK;
 }
 
@@ -331,14 +281,10 @@ static int ghosts(struct dist *d, struct store *st)
             d->scount[r] = (int)e - d->sdispl[r];
         }
         total = e;
-        if (pass == 0 && total + 1 > d->send_cap) {
-            int32_t *s = sim_realloc(d->send_idx, (total + 1) * sizeof *s);
-            if (!s) {
-                free(all);
-                return SIM_ERR_NOMEM;
-            }
-            d->send_idx = s;
-            d->send_cap = total + 1;
+        if (pass == 0 && sim_reserve((void **)&d->send_idx, &d->send_cap,
+                                     total + 1, sizeof *d->send_idx)) {
+            free(all);
+            return SIM_ERR_NOMEM;
         }
     }
     free(all);
@@ -371,7 +317,7 @@ static int refresh(struct pop_halo *h, void *data, size_t elem)
         d->rbc[r] = d->rcount[r] * (int)elem;
         d->rbd[r] = d->rdispl[r] * (int)elem;
     }
-    TRY(grow(&d->sbuf, &d->scap, ns * elem));
+    TRY(sim_reserve((void **)&d->sbuf, &d->scap, ns * elem, 1));
     const char *src = data;
     for (size_t e = 0; e < ns; e++)
         memcpy(d->sbuf + e * elem, src + (size_t)d->send_idx[e] * elem, elem);
@@ -381,13 +327,11 @@ static int refresh(struct pop_halo *h, void *data, size_t elem)
     return SIM_OK;
 }
 
-static double reduce(struct pop_halo *h, double v, enum pop_reduce op)
+static void reduce(struct pop_halo *h, double *v, int n, enum pop_reduce op)
 {
     struct dist *d = (struct dist *)h;
-    double r = v;
-    MPI_Allreduce(&v, &r, 1, MPI_DOUBLE, op == POP_SUM ? MPI_SUM
+    MPI_Allreduce(MPI_IN_PLACE, v, n, MPI_DOUBLE, op == POP_SUM ? MPI_SUM
                   : op == POP_MIN ? MPI_MIN : MPI_MAX, d->comm);
-    return r;
 }
 
 static int64_t exscan(struct pop_halo *h, int64_t v, int64_t *total)
@@ -548,7 +492,7 @@ int dist_split(struct dist *d, struct store *st, const double *weight)
     for (size_t i = 0; i < n; i++)
         if (decompose_owner(d->cuts, d->h.size, x + 3 * i) == d->h.rank)
             d->keep[m++] = (int32_t)i;
-    compact_raw(st, d->keep, m);
+    TRY(store_compact_unmapped(st, d->keep, m));
     d->h.n_own = (int)m;
     TRY(ghosts(d, st));
     return ids_to_index(d, st);
@@ -585,7 +529,7 @@ int dist_gather(struct dist *d, const struct store *st, struct store **whole)
     const int64_t *ids;
     TRY(ids_of(st, &ids));
     const int mine = d->h.n_own;
-    TRY(grow(&d->sbuf, &d->scap, (size_t)mine * R));
+    TRY(sim_reserve((void **)&d->sbuf, &d->scap, (size_t)mine * R, 1));
     for (int i = 0; i < mine; i++)
         pack(st, (size_t)i, d->sbuf + (size_t)i * R, ids);
     int cnt = mine * (int)R;
@@ -599,7 +543,7 @@ int dist_gather(struct dist *d, const struct store *st, struct store **whole)
                 return sim_error(SIM_ERR_INPUT, "distribute: more than 2 GB "
                                  "to gather for output");
         }
-    TRY(grow(&d->rbuf, &d->rcap, total + 1));
+    TRY(sim_reserve((void **)&d->rbuf, &d->rcap, total + 1, 1));
     MPI_Gatherv(d->sbuf, cnt, MPI_BYTE, d->rbuf, d->rbc, d->rbd, MPI_BYTE, 0,
                 d->comm);
     *whole = NULL;
@@ -625,13 +569,8 @@ int dist_gather(struct dist *d, const struct store *st, struct store **whole)
         id_off += st->f[k].elem;
     }
     const size_t n = total / R;
-    if (2 * n > d->order_cap) {
-        int64_t *o = sim_realloc(d->order, (2 * n + 2) * sizeof *o);
-        if (!o)
-            return SIM_ERR_NOMEM;
-        d->order = o;
-        d->order_cap = 2 * n + 2;
-    }
+    TRY(sim_reserve((void **)&d->order, &d->order_cap, 2 * n + 2,
+                    sizeof *d->order));
     for (size_t e = 0; e < n; e++) {
         memcpy(&d->order[2 * e], d->rbuf + e * R + id_off, sizeof(int64_t));
         d->order[2 * e + 1] = (int64_t)e;

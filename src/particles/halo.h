@@ -38,8 +38,8 @@ struct pop_halo_ops {
     /* The owners' values of field data (elem bytes per particle) into the
      * ghosts. Collective. */
     int (*refresh)(struct pop_halo *h, void *data, size_t elem);
-    /* v combined over the ranks. Collective. */
-    double (*reduce)(struct pop_halo *h, double v, enum pop_reduce op);
+    /* v[0, n) combined over the ranks, in place. Collective. */
+    void (*reduce)(struct pop_halo *h, double *v, int n, enum pop_reduce op);
     /* The sum of v over the ranks before this one; *total over all. */
     int64_t (*exscan)(struct pop_halo *h, int64_t v, int64_t *total);
     /* When the largest rank's weight (per own particle; NULL: 1 each)
@@ -66,5 +66,13 @@ struct pop_halo {
     int balance_all;      /* weight 1 for every particle (else the
                              solver's own choice, e.g. its fluid)      */
 };
+
+/* One value combined over the ranks. */
+static inline double pop_halo_reduce1(struct pop_halo *h, double v,
+                                      enum pop_reduce op)
+{
+    h->ops->reduce(h, &v, 1, op);
+    return v;
+}
 
 #endif

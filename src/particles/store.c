@@ -201,10 +201,8 @@ int store_permute(struct store *s, const int32_t *perm, size_t m)
     return SIM_OK;
 }
 
-int store_compact(struct store *s, const int32_t *kept, size_t m)
+int store_compact_unmapped(struct store *s, const int32_t *kept, size_t m)
 {
-    int any;
-    TRY(index_map(s, kept, m, &any));
     for (int k = 0; k < s->nfields; k++) {
         struct store_field *f = &s->f[k];
         if (!owned(f))
@@ -216,9 +214,17 @@ int store_compact(struct store *s, const int32_t *kept, size_t m)
                 memcpy(a + i * f->elem, a + (size_t)kept[i] * f->elem,
                        f->elem);
     }
+    s->n = m;
+    return SIM_OK;
+}
+
+int store_compact(struct store *s, const int32_t *kept, size_t m)
+{
+    int any;
+    TRY(index_map(s, kept, m, &any));
+    TRY(store_compact_unmapped(s, kept, m));
     if (any)
         remap(s, m);
-    s->n = m;
     return SIM_OK;
 }
 

@@ -95,6 +95,9 @@ int store_permute(struct store *s, const int32_t *perm, size_t m);
 
 /* The same for an increasing list `kept`, done in place (removal). */
 int store_compact(struct store *s, const int32_t *kept, size_t m);
+/* The same leaving the index fields as they are: while particles travel
+ * between ranks they hold particle ids (particles/distribute.c). */
+int store_compact_unmapped(struct store *s, const int32_t *kept, size_t m);
 
 /* The owner struct holding the registered pointers was copied from `old`
  * to `now` (size bytes): references into it follow. */

@@ -40,7 +40,6 @@ static int start_parallel(struct solver *sv, int argc, char **argv)
 {
     int want = 0;
     sv->rank = 0;
-    sv->nranks = 1;
     for (int k = 1; k < argc; k++)
         want |= !strcmp(argv[k], "-parallel");
     if (!want)
@@ -55,7 +54,6 @@ static int start_parallel(struct solver *sv, int argc, char **argv)
     sv->distributed = 1;
     atexit(abort_job);
     MPI_Comm_rank(MPI_COMM_WORLD, &sv->rank);
-    MPI_Comm_size(MPI_COMM_WORLD, &sv->nranks);
     if (sv->rank > 0)
         log_set_quiet(1);
     return SIM_OK;

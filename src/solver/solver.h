@@ -133,9 +133,9 @@ struct solver {
     struct fo_scene scene;      /* filled by ops->refresh_scene           */
     const struct dict *checked[SOLVER_MAX_CHECKED];
     int nchecked;
-    /* -parallel: this process's rank and the number of ranks (0 and 1 in
-     * one process); only rank 0 logs, locks the case and writes. */
-    int rank, nranks;
+    /* -parallel: this process's rank (0 in one process); only rank 0
+     * logs, locks the case and writes. */
+    int rank;
     int distributed;            /* -parallel was given                    */
 };
 

@@ -377,18 +377,19 @@ static int distribute(struct fluid *f)
     struct dict *dec = NULL;
     TRY(app_read_dict_optional(&f->sv.app, "system/decomposeParDict", &dec));
     int rc = dec ? decompose_settings_read(dec, &ds) : SIM_OK;
-    if (!rc && dec && ds.nparts != f->sv.nranks)
+    int nranks;
+    MPI_Comm_size(MPI_COMM_WORLD, &nranks);
+    if (!rc && dec && ds.nparts != nranks)
         log_warn("system/decomposeParDict: numberOfSubdomains %ld, but the "
                  "run has %d ranks (mpirun -np): the particles are cut in "
-                 "%d", ds.nparts, f->sv.nranks, f->sv.nranks);
+                 "%d", ds.nparts, nranks, nranks);
     dict_free(dec);
     TRY(rc);
     struct mps_particles *P = &f->s.P;
     double *w = sim_malloc(((size_t)P->n + 1) * sizeof *w);
     if (!w)
         return SIM_ERR_NOMEM;
-    for (int i = 0; i < P->n; i++)
-        w[i] = ds.balance_all || P->type[i] == MPS_FLUID ? 1.0 : 0.0;
+    mps_balance_weights(P, P->n, ds.balance_all, w);
     rc = dist_create(MPI_COMM_WORLD, f->dim, f->s.r_list, &f->dist);
     if (!rc) {
         dist_set_solve(f->dist, halo_solve);
@@ -418,8 +419,7 @@ static int whole_cloud(struct fluid *f)
         TRY(dist_gather(f->dist, &f->s.P.st, &w));
         f->whole = w;
         struct pop_halo *h = dist_halo(f->dist);
-        for (int k = 0; k < 3 * f->npatches; k++)
-            f->force[k] = h->ops->reduce(h, f->force[k], POP_SUM);
+        h->ops->reduce(h, f->force, 3 * f->npatches, POP_SUM);
         return SIM_OK;
     }
 #endif
@@ -496,7 +496,7 @@ static int write_pieces(struct fluid *f, const char *dir)
         snprintf(path, sizeof path, "%s/fluid.vtu", dir);
         unlink(path);                 /* a whole cloud of an earlier run */
     }
-    if (h->ops->reduce(h, rc != SIM_OK, POP_MAX) > 0 && !rc)
+    if (pop_halo_reduce1(h, rc != SIM_OK, POP_MAX) > 0 && !rc)
         rc = sim_error(SIM_ERR_IO, "%s: another rank could not write its "
                        "piece of fluid.pvtu", dir);
     return rc;

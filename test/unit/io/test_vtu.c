@@ -240,9 +240,7 @@ static void test_pvtu(void **state)
                3 * sizes[p] * sizeof(double));
         for (int k = 0; k < part.nfields; k++) {
             size_t e = (size_t)part.fields[k].ncomp
-                     * (part.fields[k].type == VTU_FLOAT64
-                        || part.fields[k].type == VTU_INT64 ? 8
-                        : part.fields[k].type == VTU_INT32 ? 4 : 1);
+                     * vtu_type_size(part.fields[k].type);
             memcpy(part.fields[k].data, (char *)whole.fields[k].data
                    + e * first, e * sizes[p]);
         }
