@@ -45,37 +45,73 @@ void coupling_shepard(const struct coupling_pairs *P, int ncomp,
     }
 }
 
+/* sum w, sum w eps, sum w u (3), sum w gradp (3) of grain k */
+static void grain_sums(const struct coupling_pairs *P, int k,
+                       const uint8_t *mask, const double *eps,
+                       const double *u, const double *gradp_p,
+                       double s[COUPLING_SUMS])
+{
+    for (int c = 0; c < COUPLING_SUMS; c++)
+        s[c] = 0;
+    for (int64_t e = P->gstart[k]; e < P->gstart[k + 1]; e++) {
+        int32_t i = P->gj[e];
+        if (mask && !mask[i])
+            continue;
+        double w = P->gw[e];
+        s[0] += w;
+        s[1] += w * eps[i];
+        for (int c = 0; c < 3; c++)
+            s[2 + c] += w * u[3 * (int64_t)i + c];
+        if (gradp_p)
+            for (int c = 0; c < 3; c++)
+                s[5 + c] += w * gradp_p[3 * (int64_t)i + c];
+    }
+}
+
+static void grain_finish(int k, const double s[COUPLING_SUMS], int with_g,
+                         struct coupling_grain_fields *out)
+{
+    double ws = s[0];
+    int wet = ws > 0;
+    out->wet[k] = (uint8_t)wet;
+    out->eps[k] = wet ? s[1] / ws : 1.0;
+    for (int c = 0; c < 3; c++) {
+        out->u[3 * k + c] = wet ? s[2 + c] / ws : 0.0;
+        if (out->gradp)
+            out->gradp[3 * k + c] = wet && with_g ? s[5 + c] / ws : 0.0;
+    }
+}
+
 void coupling_interp_grains(const struct coupling_pairs *P,
                             const uint8_t *mask, const double *eps,
                             const double *u, const double *gradp_p,
                             struct coupling_grain_fields *out)
 {
+    int with_g = gradp_p && out->gradp;
 #pragma omp parallel for schedule(dynamic, 16)
     for (int k = 0; k < P->ng; k++) {
-        double ws = 0, se = 0, su[3] = { 0, 0, 0 }, sg[3] = { 0, 0, 0 };
-        int with_g = gradp_p && out->gradp;
-        for (int64_t e = P->gstart[k]; e < P->gstart[k + 1]; e++) {
-            int32_t i = P->gj[e];
-            if (mask && !mask[i])
-                continue;
-            double w = P->gw[e];
-            ws += w;
-            se += w * eps[i];
-            for (int c = 0; c < 3; c++)
-                su[c] += w * u[3 * (int64_t)i + c];
-            if (with_g)
-                for (int c = 0; c < 3; c++)
-                    sg[c] += w * gradp_p[3 * (int64_t)i + c];
-        }
-        int wet = ws > 0;
-        out->wet[k] = (uint8_t)wet;
-        out->eps[k] = wet ? se / ws : 1.0;
-        for (int c = 0; c < 3; c++) {
-            out->u[3 * k + c] = wet ? su[c] / ws : 0.0;
-            if (out->gradp)
-                out->gradp[3 * k + c] = wet && with_g ? sg[c] / ws : 0.0;
-        }
+        double s[COUPLING_SUMS];
+        grain_sums(P, k, mask, eps, u, with_g ? gradp_p : NULL, s);
+        grain_finish(k, s, with_g, out);
     }
+}
+
+void coupling_interp_sums(const struct coupling_pairs *P,
+                          const uint8_t *mask, const double *eps,
+                          const double *u, const double *gradp_p,
+                          double *sums)
+{
+#pragma omp parallel for schedule(dynamic, 16)
+    for (int k = 0; k < P->ng; k++)
+        grain_sums(P, k, mask, eps, u, gradp_p, sums + COUPLING_SUMS * k);
+}
+
+void coupling_interp_finish(int ng, const double *sums, int with_gradp,
+                            struct coupling_grain_fields *out)
+{
+#pragma omp parallel for schedule(static)
+    for (int k = 0; k < ng; k++)
+        grain_finish(k, sums + COUPLING_SUMS * k, with_gradp, out);
 }
 
 void coupling_gradient_consistent(const struct neighbour_list *nl,

@@ -52,6 +52,18 @@ void coupling_interp_grains(const struct coupling_pairs *P,
                             const double *u, const double *gradp_p,
                             struct coupling_grain_fields *out);
 
+/* The same in two halves, for a cloud spread over ranks (particles/
+ * halo.h): per grain the weighted sums over the particles of mask,
+ * COUPLING_SUMS values (sum w, sum w eps, sum w u, sum w gradp), which the
+ * caller adds over the ranks; then the fields from those sums. */
+enum { COUPLING_SUMS = 8 };
+void coupling_interp_sums(const struct coupling_pairs *P,
+                          const uint8_t *mask, const double *eps,
+                          const double *u, const double *gradp_p,
+                          double *sums);
+void coupling_interp_finish(int ng, const double *sums, int with_gradp,
+                            struct coupling_grain_fields *out);
+
 /*
  * Consistent (zeroth-order exact) MPS gradient at particles, for A0-14,
  * over the whole rows of a neighbour list with the weights W of the

@@ -83,9 +83,18 @@ static double grain_weight(const struct coupling_pairs *P, int k,
     return W;
 }
 
-int coupling_reaction(struct coupling_pairs *P, const uint8_t *mask,
-                      const double *Fbar, double Vp, const double *phi,
-                      double *fA, int *n_orphan)
+void coupling_reaction_weights(const struct coupling_pairs *P,
+                               const uint8_t *mask, double *W)
+{
+#pragma omp parallel for schedule(static)
+    for (int k = 0; k < P->ng; k++)
+        W[k] = grain_weight(P, k, mask);
+}
+
+/* W NULL: each grain's weight sum from the pairs at hand. */
+static int reaction(struct coupling_pairs *P, const double *W,
+                    const uint8_t *mask, const double *Fbar, double Vp,
+                    const double *phi, double *fA, int *n_orphan)
 {
     if (!(Vp > 0))
         return sim_error(SIM_ERR_INPUT, "reaction: particle volume %g must "
@@ -94,10 +103,10 @@ int coupling_reaction(struct coupling_pairs *P, const uint8_t *mask,
     int orphans = 0;
 #pragma omp parallel for schedule(static) reduction(+ : orphans)
     for (int k = 0; k < P->ng; k++) {
-        double W = grain_weight(P, k, mask);
+        double Wk = W ? W[k] : grain_weight(P, k, mask);
         for (int d = 0; d < 3; d++)
-            c[3 * k + d] = W > 0 ? Fbar[3 * k + d] / W : 0.0;
-        orphans += !(W > 0);
+            c[3 * k + d] = Wk > 0 ? Fbar[3 * k + d] / Wk : 0.0;
+        orphans += !(Wk > 0);
     }
     const double inv_v = 1.0 / Vp;
 #pragma omp parallel for schedule(static)
@@ -114,4 +123,19 @@ int coupling_reaction(struct coupling_pairs *P, const uint8_t *mask,
     if (n_orphan)
         *n_orphan = orphans;
     return SIM_OK;
+}
+
+int coupling_reaction(struct coupling_pairs *P, const uint8_t *mask,
+                      const double *Fbar, double Vp, const double *phi,
+                      double *fA, int *n_orphan)
+{
+    return reaction(P, NULL, mask, Fbar, Vp, phi, fA, n_orphan);
+}
+
+int coupling_reaction_given(struct coupling_pairs *P, const double *W,
+                            const uint8_t *mask, const double *Fbar,
+                            double Vp, const double *phi, double *fA,
+                            int *n_orphan)
+{
+    return reaction(P, W, mask, Fbar, Vp, phi, fA, n_orphan);
 }

@@ -49,4 +49,14 @@ int coupling_reaction(struct coupling_pairs *P, const uint8_t *mask,
                       const double *Fbar, double Vp, const double *phi,
                       double *fA, int *n_orphan);
 
+/* A cloud spread over ranks (particles/halo.h): each grain's weight sum
+ * W_k = sum_j w_s(|r_kj|) over the particles of mask (ng), summed over
+ * the ranks by the caller, then the same reaction with those sums. */
+void coupling_reaction_weights(const struct coupling_pairs *P,
+                               const uint8_t *mask, double *W);
+int coupling_reaction_given(struct coupling_pairs *P, const double *W,
+                            const uint8_t *mask, const double *Fbar,
+                            double Vp, const double *phi, double *fA,
+                            int *n_orphan);
+
 #endif

@@ -46,6 +46,7 @@ static int grow_grains(struct couple_fluid *cf, int ng)
     SIM_GROW(cf->u_k, 3 * cap);
     SIM_GROW(cf->gradp_k, 3 * cap);
     SIM_GROW(cf->wet, cap);
+    SIM_GROW(cf->gsum, COUPLING_SUMS * cap);
     cf->cap_g = cap;
     return SIM_OK;
 }
@@ -111,6 +112,20 @@ int couple_fluid_init(struct couple_fluid *cf, const struct dict *coupling,
     return SIM_OK;
 }
 
+/* Sphere volumes and the measures of eq. (31) from the radii. */
+static int grain_volumes(struct couple_fluid *cf, int ng)
+{
+    for (int k = 0; k < ng; k++) {
+        double r = cf->rg[k];
+        if (!(r > 0) || !isfinite(r))
+            return sim_error(SIM_ERR_PEER, "DEM state: grain %d has radius "
+                             "%g", k, r);
+        cf->Vs[k] = 4.0 / 3.0 * M_PI * r * r * r;
+        cf->Vg[k] = coupling_grain_measure(cf->dim, r, cf->dp);
+    }
+    return SIM_OK;
+}
+
 int couple_fluid_set_grains(struct couple_fluid *cf,
                             const struct proto_dem_state *st, double t)
 {
@@ -127,14 +142,7 @@ int couple_fluid_set_grains(struct couple_fluid *cf,
     memcpy(cf->vg, st->velocity, 3 * (size_t)ng * sizeof *cf->vg);
     memcpy(cf->rg, st->radius, (size_t)ng * sizeof *cf->rg);
     memcpy(cf->Fbar, st->drag, 3 * (size_t)ng * sizeof *cf->Fbar);
-    for (int k = 0; k < ng; k++) {
-        double r = cf->rg[k];
-        if (!(r > 0) || !isfinite(r))
-            return sim_error(SIM_ERR_PEER, "DEM state: grain %d has radius "
-                             "%g", k, r);
-        cf->Vs[k] = 4.0 / 3.0 * M_PI * r * r * r;
-        cf->Vg[k] = coupling_grain_measure(cf->dim, r, cf->dp);
-    }
+    TRY(grain_volumes(cf, ng));
     if (grew && ng > 0) {
         double *d = malloc((size_t)ng * sizeof *d);
         if (!d)
@@ -180,6 +188,19 @@ static int find_pairs(struct couple_fluid *cf, const struct mps_particles *P)
     return SIM_OK;
 }
 
+/* The particles that contribute to the grains' sums and take a share of
+ * their reaction: fluid and wall (A0-13). own_only: of a distributed run,
+ * only this rank's own particles, so that a sum over the ranks counts
+ * each particle once. */
+static void share_mask(struct couple_fluid *cf, const struct mps_solver *s,
+                       int own_only)
+{
+    const struct mps_particles *P = &s->P;
+    const int n = own_only ? mps_own(s) : P->n;
+    for (int i = 0; i < P->n; i++)
+        cf->mask[i] = i < n && P->type[i] != MPS_DUMMY;
+}
+
 int couple_fluid_update(struct couple_fluid *cf, struct mps_solver *s)
 {
     struct mps_particles *P = &s->P;
@@ -201,12 +222,27 @@ int couple_fluid_update(struct couple_fluid *cf, struct mps_solver *s)
             P->inv_eps[i] = 1.0;
         else if (P->phi)
             P->inv_eps[i] *= P->phi[i];
-    for (int i = 0; i < P->n; i++)
-        cf->mask[i] = P->type[i] != MPS_DUMMY;
     coupling_reaction_input(cf->cs.model, cf->cs.conservative, cf->ng,
                             cf->Fbar, cf->eps_k, cf->Fin);
-    TRY(coupling_reaction(&cf->pairs, cf->mask, cf->Fin, cf->Vp, P->phi,
-                          cf->fA, &cf->n_orphan));
+    if (s->halo) {
+        /* each grain's weight over every rank's own particles; then every
+         * particle held here, ghosts too, takes its share */
+        share_mask(cf, s, 1);
+        coupling_reaction_weights(&cf->pairs, cf->mask, cf->gsum);
+        s->halo->ops->reduce(s->halo, cf->gsum, cf->ng, POP_SUM);
+        share_mask(cf, s, 0);
+        TRY(coupling_reaction_given(&cf->pairs, cf->gsum, cf->mask, cf->Fin,
+                                    cf->Vp, P->phi, cf->fA, &cf->n_orphan));
+        long clamped = 0;
+        for (int i = 0; i < mps_own(s); i++)
+            clamped += cf->eps[i] <= cf->cs.eps_min;
+        cf->n_clamped = (long)pop_halo_reduce1(s->halo, (double)clamped,
+                                               POP_SUM);
+    } else {
+        share_mask(cf, s, 0);
+        TRY(coupling_reaction(&cf->pairs, cf->mask, cf->Fin, cf->Vp, P->phi,
+                              cf->fA, &cf->n_orphan));
+    }
     memset(P->f_ext, 0, 3 * (size_t)P->n * sizeof *P->f_ext);
     for (int i = 0; i < P->n; i++)
         cf->mask[i] = P->type[i] == MPS_FLUID;
@@ -238,7 +274,7 @@ static void check_start(const struct couple_fluid *cf,
     const struct mps_particles *P = &s->P;
     int nf = 0, nfill = 0, nw = 0;
     double ef = 1, ew = 1;
-    for (int i = 0; i < P->n; i++) {
+    for (int i = 0; i < mps_own(s); i++) {
         if (cf->eps[i] >= PACKED_EPS)
             continue;
         if (P->type[i] == MPS_FLUID) {
@@ -249,6 +285,13 @@ static void check_start(const struct couple_fluid *cf,
             nw++;
             ew = fmin(ew, cf->eps[i]);
         }
+    }
+    if (s->halo) {
+        double n[3] = { nf, nfill, nw }, e[2] = { ef, ew };
+        s->halo->ops->reduce(s->halo, n, 3, POP_SUM);
+        s->halo->ops->reduce(s->halo, e, 2, POP_MIN);
+        nf = (int)n[0], nfill = (int)n[1], nw = (int)n[2];
+        ef = e[0], ew = e[1];
     }
     char at[512];
     if (nfill)
@@ -281,8 +324,10 @@ int couple_fluid_grain_fields(struct couple_fluid *cf, struct mps_solver *s)
 {
     struct mps_particles *P = &s->P;
     double t0 = app_wall_time();
-    /* the step renumbered and moved the particles; the grains are where
-     * the porosity was computed for */
+    /* the step renumbered and moved the particles (and brought ghosts to
+     * a distributed run); the grains are where the porosity was computed
+     * for */
+    TRY(grow_particles(cf, P->cap > P->n ? P->cap : P->n));
     TRY(find_pairs(cf, P));
     /* eps^m at the current positions of both phases (A.10 step 2), not
      * the values the last step used (computed before the particles moved):
@@ -290,8 +335,7 @@ int couple_fluid_grain_fields(struct couple_fluid *cf, struct mps_solver *s)
      * continuous run. */
     TRY(coupling_porosity(&cf->pairs, cf->Vg, cf->cs.eps_min, cf->eps, NULL,
                           NULL));
-    for (int i = 0; i < P->n; i++)
-        cf->mask[i] = P->type[i] != MPS_DUMMY;
+    share_mask(cf, s, 0);
     const double *gp = NULL;
     /* Model A: consistent gradient (A0-14) on the solver's last list; its
      * weights are one step old (positions moved by dt u), and before the
@@ -306,7 +350,16 @@ int couple_fluid_grain_fields(struct couple_fluid *cf, struct mps_solver *s)
     struct coupling_grain_fields G = { .eps = cf->eps_k, .u = cf->u_k,
                                        .gradp = gp ? cf->gradp_k : NULL,
                                        .wet = cf->wet };
-    coupling_interp_grains(&cf->pairs, cf->mask, cf->eps, P->u, gp, &G);
+    if (s->halo) {
+        share_mask(cf, s, 1);
+        coupling_interp_sums(&cf->pairs, cf->mask, cf->eps, P->u, gp,
+                             cf->gsum);
+        s->halo->ops->reduce(s->halo, cf->gsum, COUPLING_SUMS * cf->ng,
+                             POP_SUM);
+        coupling_interp_finish(cf->ng, cf->gsum, gp != NULL, &G);
+    } else {
+        coupling_interp_grains(&cf->pairs, cf->mask, cf->eps, P->u, gp, &G);
+    }
     if (cf->cs.model == COUPLING_MODEL_A && !gp)
         memset(cf->gradp_k, 0, 3 * (size_t)cf->ng * sizeof *cf->gradp_k);
     cf->wall += app_wall_time() - t0;
@@ -317,17 +370,33 @@ void couple_fluid_reaction_total(const struct couple_fluid *cf,
                                  const struct mps_solver *s, double F[3])
 {
     F[0] = F[1] = F[2] = 0;
-    for (int i = 0; i < s->P.n && i < cf->pairs.np; i++)
+    for (int i = 0; i < mps_own(s) && i < cf->pairs.np; i++)
         for (int c = 0; c < 3; c++)
             F[c] += cf->Vp * cf->fA[3 * i + c];
+    if (s->halo)
+        s->halo->ops->reduce(s->halo, F, 3, POP_SUM);
 }
 
-int couple_fluid_open(struct couple_fluid *cf, const struct dict *coupling,
-                      const char *case_dir, const char *program,
-                      double end_time)
+void couple_fluid_reaction_field(const struct couple_fluid *cf,
+                                 const struct mps_particles *P, double *F)
+{
+    int m = P->n < cf->pairs.np ? P->n : cf->pairs.np;
+    for (int i = 0; i < m; i++) {
+        double V = P->phi ? cf->Vp * P->phi[i] : cf->Vp; /* V_i of eq. (36) */
+        for (int c = 0; c < 3; c++)
+            F[3 * i + c] = -V * cf->fA[3 * i + c];
+    }
+    memset(F + 3 * (size_t)m, 0, 3 * (size_t)(P->n - m) * sizeof *F);
+}
+
+int couple_fluid_open(struct couple_fluid *cf, const struct mps_solver *s,
+                      const struct dict *coupling, const char *case_dir,
+                      const char *program, double end_time)
 {
     struct channel_settings cs;
     TRY(channel_signals_install());
+    if (s->halo && s->halo->rank > 0)
+        return SIM_OK;          /* rank 0 holds the channel */
     TRY(channel_settings_default(&cs, CHANNEL_FLUID, program, case_dir));
     TRY(channel_settings_from_dict(coupling, &cs));
     cs.dimension = cf->dim;
@@ -335,8 +404,50 @@ int couple_fluid_open(struct couple_fluid *cf, const struct dict *coupling,
     return channel_open(&cs, &cf->ch);
 }
 
-static int receive_dem(struct couple_fluid *cf, double t_expect,
-                       double tol)
+/* A distributed run: rank 0 holds the channel, and the outcome of each
+ * of its channel operations reaches every rank, so that the ranks stop
+ * together (and write their state together) or go on together. */
+static int agree(const struct mps_solver *s, int rc)
+{
+    struct pop_halo *h = s->halo;
+    if (!h)
+        return rc;
+    int v = rc;
+    h->ops->bcast(h, &v, sizeof v);
+    if (h->rank > 0 && v)
+        return sim_error(v, "coupling: the exchange with demSolid failed on "
+                         "rank 0 (its log says why)");
+    return rc;
+}
+
+/* Rank 0's grains to the other ranks of a distributed run. */
+static int share_grains(struct couple_fluid *cf, const struct mps_solver *s)
+{
+    struct pop_halo *h = s->halo;
+    double head[2] = { cf->ng, cf->dem_time };
+    h->ops->bcast(h, head, sizeof head);
+    int ng = (int)head[0];
+    if (h->rank > 0) {
+        TRY(grow_grains(cf, ng));
+        for (int k = cf->ng; k < ng; k++) {
+            cf->eps_k[k] = 1.0;
+            cf->wet[k] = 0;
+        }
+    }
+    h->ops->bcast(h, cf->xg, 3 * (size_t)ng * sizeof *cf->xg);
+    h->ops->bcast(h, cf->vg, 3 * (size_t)ng * sizeof *cf->vg);
+    h->ops->bcast(h, cf->rg, (size_t)ng * sizeof *cf->rg);
+    h->ops->bcast(h, cf->Fbar, 3 * (size_t)ng * sizeof *cf->Fbar);
+    if (h->rank > 0) {
+        TRY(grain_volumes(cf, ng));
+        cf->ng = ng;
+        cf->dem_time = head[1];
+    }
+    return SIM_OK;
+}
+
+static int receive_channel(struct couple_fluid *cf, double t_expect,
+                           double tol)
 {
     struct channel_frame f;
     const void *pl;
@@ -357,12 +468,23 @@ static int receive_dem(struct couple_fluid *cf, double t_expect,
     return rc ? rc : rc2;
 }
 
-static int send_fluid(struct couple_fluid *cf, long step, double t)
+static int receive_dem(struct couple_fluid *cf, const struct mps_solver *s,
+                       double t_expect, double tol)
+{
+    int root = !s->halo || s->halo->rank == 0;
+    TRY(agree(s, root ? receive_channel(cf, t_expect, tol) : SIM_OK));
+    return s->halo ? share_grains(cf, s) : SIM_OK;
+}
+
+static int send_fluid(struct couple_fluid *cf, const struct mps_solver *s,
+                      long step, double t)
 {
     struct proto_fluid_state fs = {
         .n = (size_t)cf->ng, .velocity = cf->u_k, .porosity = cf->eps_k,
         .grad_p = cf->cs.model == COUPLING_MODEL_A ? cf->gradp_k : NULL };
-    return proto_send_fluid_state(cf->ch, (uint64_t)step, t, &fs);
+    if (s->halo && s->halo->rank > 0)
+        return agree(s, SIM_OK);
+    return agree(s, proto_send_fluid_state(cf->ch, (uint64_t)step, t, &fs));
 }
 
 int couple_fluid_exchange(struct couple_fluid *cf, struct mps_solver *s,
@@ -372,7 +494,7 @@ int couple_fluid_exchange(struct couple_fluid *cf, struct mps_solver *s,
     if (cf->concurrent) {
         /* DEM state at t (drag of the interval before), then our state at
          * t: the DEM advances while we step */
-        TRY(receive_dem(cf, t, tol));
+        TRY(receive_dem(cf, s, t, tol));
         if (cf->exchanges == 0)
             for (int k = 0; k < cf->ng; k++)
                 cf->eps_k[k] = 1.0;
@@ -380,24 +502,27 @@ int couple_fluid_exchange(struct couple_fluid *cf, struct mps_solver *s,
         if (cf->exchanges == 0)
             check_start(cf, s);
         TRY(couple_fluid_grain_fields(cf, s));
-        TRY(send_fluid(cf, step, t));
+        TRY(send_fluid(cf, s, step, t));
         cf->exchanges++;
         return SIM_OK;
     }
     if (cf->exchanges == 0) {
         /* initial state at t: porosity eps^m before the first send */
-        TRY(receive_dem(cf, t, tol));
+        TRY(receive_dem(cf, s, t, tol));
         for (int k = 0; k < cf->ng; k++)
             cf->eps_k[k] = 1.0;
         TRY(couple_fluid_update(cf, s));
         check_start(cf, s);
     }
     TRY(couple_fluid_grain_fields(cf, s));
-    TRY(send_fluid(cf, step, t));
-    TRY(receive_dem(cf, t + dt, tol));
+    TRY(send_fluid(cf, s, step, t));
+    TRY(receive_dem(cf, s, t + dt, tol));
     TRY(couple_fluid_update(cf, s));
     if (cf->n_clamped > 0 && cf->exchanges % 100 == 0)
-        coupling_guard_porosity(cf->n_clamped, s->P.n, cf->cs.eps_min);
+        coupling_guard_porosity(cf->n_clamped, s->halo
+                                ? (long)pop_halo_reduce1(s->halo, mps_own(s),
+                                                         POP_SUM)
+                                : s->P.n, cf->cs.eps_min);
     cf->exchanges++;
     return SIM_OK;
 }
@@ -415,7 +540,7 @@ void couple_fluid_free(struct couple_fluid *cf)
     coupling_pairs_free(&cf->pairs);
     free(cf->xg); free(cf->vg); free(cf->rg); free(cf->Vg); free(cf->Vs);
     free(cf->Fbar); free(cf->Fin); free(cf->eps_k); free(cf->u_k);
-    free(cf->gradp_k); free(cf->wet);
+    free(cf->gradp_k); free(cf->wet); free(cf->gsum);
     free(cf->eps); free(cf->fA); free(cf->gradp_p);
     free(cf->mask); free(cf->id_seen);
     memset(cf, 0, sizeof *cf);

@@ -68,6 +68,8 @@ struct couple_fluid {
     /* fields at the grains, sent to the DEM side */
     double *eps_k, *u_k, *gradp_k;
     uint8_t *wet;
+    double *gsum;               /* COUPLING_SUMS ng: a distributed run's
+                                   per-grain sums before the reduction  */
     /* per MPS particle (capacity cap_p) */
     int cap_p;
     double *eps, *fA, *gradp_p;
@@ -108,11 +110,23 @@ int couple_fluid_grain_fields(struct couple_fluid *cf, struct mps_solver *s);
 void couple_fluid_reaction_total(const struct couple_fluid *cf,
                                  const struct mps_solver *s, double F[3]);
 
+/* -V_i f_A,i of the last update for every particle of P (3 P->n) [N]:
+ * the reaction written with the output, kept as a field of P's store so
+ * that it follows the particles through mps_step()'s renumbering (and a
+ * distributed run's migration). */
+struct mps_particles;
+void couple_fluid_reaction_field(const struct couple_fluid *cf,
+                                 const struct mps_particles *P, double *F);
+
 /* Channel: open (couplingDict channel keys; the dimension and endTime of
- * the case, which the handshake compares with the DEM's). */
-int couple_fluid_open(struct couple_fluid *cf, const struct dict *coupling,
-                      const char *case_dir, const char *program,
-                      double end_time);
+ * the case, which the handshake compares with the DEM's). In a
+ * distributed run (s->halo) rank 0 alone holds the channel: the exchange
+ * shares the grains it receives with every rank (each holds every grain),
+ * and the grains' sums of eqs. (32)-(33) and (36) are summed over the
+ * ranks' own particles. */
+int couple_fluid_open(struct couple_fluid *cf, const struct mps_solver *s,
+                      const struct dict *coupling, const char *case_dir,
+                      const char *program, double end_time);
 /* One exchange before the step t -> t + dt (see the top of this file).
  * The DEM state must arrive at t + dt (same coupling interval on both
  * sides), else SIM_ERR_INPUT naming both controlDicts. */

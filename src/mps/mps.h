@@ -102,6 +102,9 @@ struct mps_particles {
                          share of their fluid neighbours (kernel-weighted,
                          the forces function object's phase); fluid ones,
                          their phase                                    */
+    double *halo_reach; /* NULL, or n (distributed runs with deep corner
+                         dummies): how far a wall particle must reach as
+                         a ghost, its farthest dummy's distance [m]      */
 };
 
 struct mps_settings {
@@ -279,12 +282,18 @@ int mps_settings_read(const struct dict *transport, const struct dict *g,
  * the steps then exchange what the neighbours' rows read, and the PPE is
  * solved over the ranks by h->ops->solve. Refused (SIM_ERR_INPUT, naming
  * the setting) for what does not run distributed yet: soil, removed
- * wall patches, shifting, extrapolated surface or dummy pressure, the
- * coupling hooks; located in schemes (system/mpsSchemes, may be NULL)
+ * wall patches, shifting, extrapolated surface or dummy pressure; located in schemes (system/mpsSchemes, may be NULL)
  * where the setting is its key. Renumbering is off (the own particles
  * stay first). */
 int mps_distribute(struct mps_solver *s, struct pop_halo *h,
                    const struct dict *schemes);
+
+/* Before the split of a distributed run (every rank holding the whole
+ * cloud, partners found): a dummy leans on its partner's pressure, and a
+ * dummy of a deep corner has borrowed a partner beyond the list radius
+ * r_list; such partners get the field "haloReach" (halo.h) with that
+ * distance, so that they reach the rank of their dummy as ghosts. */
+int mps_halo_reach(struct mps_solver *s);
 
 /* The weights of decomposeParDict's balance (particles/decompose.h) for
  * particles [0, n): fluid particles 1, walls and dummies 0 (their rows

@@ -14,6 +14,8 @@
  *                                                   neighbours, its pattern)
  *   PPE, then the dummies' pressure        P       (the gradient, the
  *                                                   dummies' partner value)
+ *   volume exchange (coupled, volume-     phi, inv_eps, u
+ *   FractionRelaxation > 0)
  *
  * The rows of the ghosts are computed too and thrown away: their sums miss
  * the particles beyond the halo. The PPE's unknowns are numbered per rank,
@@ -66,7 +68,6 @@ int mps_distribute(struct mps_solver *s, struct pop_halo *h,
                    const struct dict *schemes)
 {
     const struct mps_settings *S = &s->S;
-    const struct mps_particles *P = &s->P;
     const struct dict *fs = NULL;
     if (schemes && dict_is_dict(schemes, "freeSurface"))
         TRY(dict_get_dict(schemes, "freeSurface", &fs));
@@ -86,9 +87,6 @@ int mps_distribute(struct mps_solver *s, struct pop_halo *h,
         if (isfinite(S->wall_motion[k].remove_at))
             return not_yet(NULL, NULL, "system/particleDict", "a wall region "
                            "with removeAt");
-    if (P->inv_eps || P->f_ext || P->phi || S->phi_relax_time > 0)
-        return not_yet(NULL, NULL, "system/couplingDict", "a coupled case "
-                       "(coupled yes)");
     s->halo = h;
     s->S.renumber_interval = 0;   /* the own particles stay first */
     s->rebuild = 1;
@@ -98,6 +96,30 @@ int mps_distribute(struct mps_solver *s, struct pop_halo *h,
     s->P.n = (int)s->P.st.n;
     s->P.cap = (int)s->P.st.cap;
     return mps_fit_work(s);
+}
+
+int mps_halo_reach(struct mps_solver *s)
+{
+    struct mps_particles *P = &s->P;
+    for (int i = 0; i < P->n; i++) {
+        int w = P->partner[i];
+        if (P->type[i] != MPS_DUMMY || w < 0)
+            continue;
+        double r2 = 0;
+        for (int q = 0; q < 3; q++) {
+            double d = P->x[3 * i + q] - P->x[3 * w + q];
+            r2 += d * d;
+        }
+        double r = sqrt(r2) * (1 + 1e-9);
+        if (r <= s->r_list)
+            continue;
+        if (!P->halo_reach)
+            TRY(store_add(&P->st, "haloReach", "the farthest dummy leaning "
+                          "on this wall particle [m]", VTU_FLOAT64, 1, 0,
+                          &P->halo_reach));
+        P->halo_reach[w] = fmax(P->halo_reach[w], r);
+    }
+    return SIM_OK;
 }
 
 int mps_halo_prepare(struct mps_solver *s)

@@ -38,7 +38,7 @@ int mps_neighbours(struct mps_solver *s);
 /* Trade water content phi between neighbouring fluid particles towards
  * a uniform phi/eps (volume_exchange.c); nothing unless phi_relax_time > 0
  * and the particles hold phi. Uses lap and div as scratch. */
-void mps_volume_exchange(struct mps_solver *s, double dt);
+int mps_volume_exchange(struct mps_solver *s, double dt);
 
 /* After every change of the list: room for its rows in the computed
  * weights (mps_w), or the stored weights of every radius (soil). */

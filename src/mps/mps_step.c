@@ -194,7 +194,7 @@ int mps_step(struct mps_solver *s, double dt)
     TRY(mps_halo_prepare(s));
     TRY(mps_neighbours(s));
     double t1 = omp_get_wtime();
-    mps_volume_exchange(s, dt);
+    TRY(mps_volume_exchange(s, dt));
     if (s->soil) {
         mps_soil_begin(s);
         TRY(mps_soil_forces(s));

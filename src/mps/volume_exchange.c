@@ -32,15 +32,16 @@
  */
 #include <math.h>
 
+#include "core/error.h"
 #include "mps/mps.h"
 #include "mps/mps_impl.h"
 
-void mps_volume_exchange(struct mps_solver *s, double dt)
+int mps_volume_exchange(struct mps_solver *s, double dt)
 {
     struct mps_particles *P = &s->P;
     const double tau = s->S.phi_relax_time;
     if (!(tau > 0) || !P->phi || !P->inv_eps)
-        return;
+        return SIM_OK;
     const double c = fmin(dt / tau, 0.25) / s->Ln.n0;
     const struct neighbour_list in = neighbour_inner(&s->nl);
     const struct neighbour_list *nl = &in;
@@ -81,4 +82,9 @@ void mps_volume_exchange(struct mps_solver *s, double dt)
         for (int q = 0; q < 3; q++)
             P->u[3 * i + q] = u_new[3 * i + q];
     }
+    /* a ghost's row misses neighbours beyond the halo: its owner's
+     * values */
+    TRY(mps_halo_refresh(s, P->phi, sizeof *P->phi));
+    TRY(mps_halo_refresh(s, P->inv_eps, sizeof *P->inv_eps));
+    return mps_halo_refresh(s, P->u, 3 * sizeof *P->u);
 }

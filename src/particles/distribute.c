@@ -263,6 +263,8 @@ static int ghosts(struct dist *d, struct store *st)
     if (!all)
         return SIM_ERR_NOMEM;
     MPI_Allgather(box, 6, MPI_DOUBLE, all, 6, MPI_DOUBLE, d->comm);
+    const struct store_field *rf = store_find(st, "haloReach");
+    const double *reach = rf && rf->type == VTU_FLOAT64 ? *rf->ref : NULL;
     size_t total = 0;
     for (int pass = 0; pass < 2; pass++) {
         size_t e = 0;
@@ -271,9 +273,10 @@ static int ghosts(struct dist *d, struct store *st)
             d->sdispl[r] = (int)e;
             for (size_t i = 0; i < n && r != me; i++) {
                 int in = 1;
+                double w = reach ? fmax(d->width, reach[i]) : d->width;
                 for (int a = 0; a < dim && in; a++)
-                    in = x[3 * i + a] >= b[a] - d->width
-                      && x[3 * i + a] <= b[3 + a] + d->width;
+                    in = x[3 * i + a] >= b[a] - w
+                      && x[3 * i + a] <= b[3 + a] + w;
                 if (in && pass == 1)
                     d->send_idx[e] = (int32_t)i;
                 e += (size_t)in;
@@ -332,6 +335,15 @@ static void reduce(struct pop_halo *h, double *v, int n, enum pop_reduce op)
     struct dist *d = (struct dist *)h;
     MPI_Allreduce(MPI_IN_PLACE, v, n, MPI_DOUBLE, op == POP_SUM ? MPI_SUM
                   : op == POP_MIN ? MPI_MIN : MPI_MAX, d->comm);
+}
+
+static void bcast(struct pop_halo *h, void *data, size_t bytes)
+{
+    struct dist *d = (struct dist *)h;
+    for (size_t off = 0; off < bytes; off += INT32_MAX) {
+        size_t m = bytes - off < INT32_MAX ? bytes - off : INT32_MAX;
+        MPI_Bcast((char *)data + off, (int)m, MPI_BYTE, 0, d->comm);
+    }
 }
 
 static int64_t exscan(struct pop_halo *h, int64_t v, int64_t *total)
@@ -413,6 +425,7 @@ static const struct pop_halo_ops dist_ops = {
     .exchange = exchange,
     .refresh = refresh,
     .reduce = reduce,
+    .bcast = bcast,
     .exscan = exscan,
 };
 

@@ -13,6 +13,10 @@
  * (STORE_INDEX) travel as particle ids and come back as local indices (-1
  * where the particle they name is not held here).
  *
+ * A particle that must reach further than the halo width (a wall particle
+ * whose dummy lies farther) carries the Float64 field "haloReach" [m] in
+ * the store: it is a ghost wherever that distance reaches.
+ *
  * The interface holds no MPI type, so that libraries above it (src/mps)
  * build without MPI; particles/distribute.c implements it with MPI.
  */
@@ -40,6 +44,8 @@ struct pop_halo_ops {
     int (*refresh)(struct pop_halo *h, void *data, size_t elem);
     /* v[0, n) combined over the ranks, in place. Collective. */
     void (*reduce)(struct pop_halo *h, double *v, int n, enum pop_reduce op);
+    /* bytes of data from rank 0 to every rank. Collective. */
+    void (*bcast)(struct pop_halo *h, void *data, size_t bytes);
     /* The sum of v over the ranks before this one; *total over all. */
     int64_t (*exscan)(struct pop_halo *h, int64_t v, int64_t *total);
     /* When the largest rank's weight (per own particle; NULL: 1 each)

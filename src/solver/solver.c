@@ -89,10 +89,6 @@ static int create_time(struct solver *sv)
     TRY(app_read_dict_optional(&sv->app, "system/couplingDict",
                                &sv->coupling));
     TRY(couple_enabled(sv->coupling, &sv->coupled));
-    if (sv->coupled && sv->distributed)
-        return sim_error(SIM_ERR_INPUT, "system/couplingDict: a coupled "
-                         "run does not run distributed (-parallel) yet: run "
-                         "%s in one process", sv->ops->name);
     if (sv->coupled && !sv->ops->coupling)
         return sim_error(SIM_ERR_INPUT, "system/couplingDict: %s cannot "
                          "run coupled", sv->ops->name);

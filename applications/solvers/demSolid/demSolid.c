@@ -18,7 +18,7 @@
  * interval receives the fluid state, advances with drag and buoyancy /
  * pressure-gradient forces, and sends the new state (couple_dem.h).
  * Its dem.vtu also holds, per grain, porosity, fluidVelocity, slipVelocity,
- * drag and buoyancy (B) or pressureGradientForce (A) (couple_output.h).
+ * drag and buoyancy (B) or pressureGradientForce (A) (couple_dem.h).
  */
 #include <math.h>
 #include <stdio.h>
@@ -111,7 +111,7 @@ static int refresh_scene(struct solver *sv)
 }
 
 /* dem.vtu of a coupled run: the grains' fields and the coupling state of
- * the interval that ends now (couple_output.h). */
+ * the interval that ends now (couple_dem.h). */
 static int write_coupled_grains(struct solid *s, const char *path)
 {
     struct dem *d = &s->d;

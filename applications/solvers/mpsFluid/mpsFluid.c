@@ -23,7 +23,8 @@
  * DEM state at the end of the step received; porosity and the reaction of
  * the grains enter the step through the solver's inv_eps and f_ext hooks
  * (couple_fluid.h). Output gains the fields "porosity" and "reaction"
- * (-V_i f_A,i of eq. 36, couple_output.h).
+ * (-V_i f_A,i of eq. 36, couple_fluid_reaction_field). With -parallel,
+ * rank 0 holds the channel and shares the grains with the other ranks.
  */
 #include <math.h>
 #include <stdio.h>
@@ -36,7 +37,6 @@
 #include "core/gravity.h"
 #include "core/log.h"
 #include "couplingMps/couple_fluid.h"
-#include "couplingMps/couple_output.h"
 #include "coupling/models.h"
 #include "functionObjects/functionObject.h"
 #include "io/vtu.h"
@@ -69,7 +69,10 @@ struct fluid {
     struct vtu_cloud cloud;         /* fluid.vtu: a view of s.P.st      */
     struct vtu_field fields[STORE_MAX_FIELDS];
     struct couple_fluid cf;         /* coupled runs only                 */
-    struct couple_output out;
+    double *porosity, *reaction;    /* their fields of the store: eps_i,
+                                       -V_i f_A,i of the last exchange,
+                                       kept through renumbering and
+                                       migration                        */
 #ifdef MPSDEM_HAVE_MPI
     struct dist *dist;              /* -parallel: this rank's part       */
 #endif
@@ -244,13 +247,13 @@ static int copy_cloud(struct fluid *f, const struct vtu_cloud *c,
     int n = (int)c->n;
     TRY(mps_particles_alloc(P, n, f->dim));
     if (f->sv.coupled) {
-        /* the coupling's fields of fluid.vtu, filled by refresh_scene;
-         * registered before volumeFraction, which follows them */
+        /* the coupling's fields of fluid.vtu (porosity filled when
+         * written, reaction at each exchange); registered before
+         * volumeFraction, which follows them */
         TRY(store_add(&P->st, "porosity", "eps", VTU_FLOAT64, 1,
-                      STORE_VIEW | STORE_WRITE, &f->cf.eps));
+                      STORE_WRITE, &f->porosity));
         TRY(store_add(&P->st, "reaction", "-V_i f_A,i of eq. (36) [N]",
-                      VTU_FLOAT64, 3, STORE_VIEW | STORE_WRITE,
-                      &f->out.out));
+                      VTU_FLOAT64, 3, STORE_WRITE, &f->reaction));
     }
     memcpy(P->x, c->points, sizeof *P->x * 3 * n);
     memcpy(P->u, ve->data, sizeof *P->u * 3 * n);
@@ -390,7 +393,9 @@ static int distribute(struct fluid *f)
     if (!w)
         return SIM_ERR_NOMEM;
     mps_balance_weights(P, P->n, ds.balance_all, w);
-    rc = dist_create(MPI_COMM_WORLD, f->dim, f->s.r_list, &f->dist);
+    rc = mps_halo_reach(&f->s);
+    if (!rc)
+        rc = dist_create(MPI_COMM_WORLD, f->dim, f->s.r_list, &f->dist);
     if (!rc) {
         dist_set_solve(f->dist, halo_solve);
         rc = dist_split(f->dist, &P->st, w);
@@ -427,17 +432,21 @@ static int whole_cloud(struct fluid *f)
     return SIM_OK;
 }
 
+/* The porosity field of the output (coupled runs). */
+static void porosity_field(struct fluid *f)
+{
+    const struct mps_particles *P = &f->s.P;
+    if (!f->sv.coupled)
+        return;
+    /* inv_eps holds phi_i/eps_i with volume fractions */
+    for (int i = 0; i < P->n; i++)
+        f->porosity[i] = (P->phi ? P->phi[i] : 1.0) / P->inv_eps[i];
+}
+
 static int refresh_scene(struct solver *sv)
 {
     struct fluid *f = (struct fluid *)sv;
-    struct mps_particles *P = &f->s.P;
-    if (f->sv.coupled) {
-        /* inv_eps holds phi_i/eps_i with volume fractions */
-        for (int i = 0; i < P->n; i++)
-            f->cf.eps[i] = (P->phi ? P->phi[i] : 1.0) / P->inv_eps[i];
-        double *react;
-        TRY(couple_output_reaction(&f->out, P, &react));
-    }
+    porosity_field(f);
     mps_wall_forces(&f->s, f->npatches, f->force);
     TRY(whole_cloud(f));
     if (!f->whole)
@@ -486,6 +495,7 @@ static int write_pieces(struct fluid *f, const char *dir)
     struct pop_halo *h = dist_halo(f->dist);
     struct vtu_cloud piece;
     char path[4400];
+    porosity_field(f);
     store_cloud(&f->s.P.st, f->sv.rt.value, f->fields, &piece);
     piece.n = (size_t)h->n_own;       /* own particles come first */
     snprintf(path, sizeof path, "%s/fluid_%d.vtu", dir, h->rank);
@@ -615,7 +625,6 @@ static void cleanup(struct solver *sv)
 {
     struct fluid *f = (struct fluid *)sv;
     couple_fluid_free(&f->cf);
-    couple_output_free(&f->out);
 #ifdef MPSDEM_HAVE_MPI
     dist_free(f->dist);
 #endif
@@ -644,7 +653,7 @@ static void list_models(void)
 static int couple_open(struct solver *sv)
 {
     struct fluid *f = (struct fluid *)sv;
-    return couple_fluid_open(&f->cf, sv->coupling, sv->app.case_abs,
+    return couple_fluid_open(&f->cf, &f->s, sv->coupling, sv->app.case_abs,
                              "mpsFluid", sv->rt.end_time);
 }
 
@@ -653,7 +662,8 @@ static int couple_before(struct solver *sv)
     struct fluid *f = (struct fluid *)sv;
     TRY(couple_fluid_exchange(&f->cf, &f->s, sv->rt.step, sv->rt.value,
                               sv->rt.dt));
-    return couple_output_snapshot(&f->out, &f->cf, &f->s.P);
+    couple_fluid_reaction_field(&f->cf, &f->s.P, f->reaction);
+    return SIM_OK;
 }
 
 static void couple_finish(struct solver *sv)

@@ -470,7 +470,7 @@ static void fluid_run(int channel, const char *name, double out[5])
     make_fluid(&s, 20, 20, 0, CH_DP);
     assert_int_equal(couple_fluid_init(&cf, cdd, &s), 0);
     if (channel) {
-        assert_int_equal(couple_fluid_open(&cf, cdd, "/tmp", "mpsFluid",
+        assert_int_equal(couple_fluid_open(&cf, &s, cdd, "/tmp", "mpsFluid",
                                            CH_END), 0);
         for (int m = 0; m < CH_STEPS; m++) {
             assert_int_equal(couple_fluid_exchange(&cf, &s, m, m * CH_DT,
@@ -630,7 +630,7 @@ static void test_channel_wrong_interval(void **st)
     struct couple_fluid cf;
     make_fluid(&s, 20, 20, 0, CH_DP);
     assert_int_equal(couple_fluid_init(&cf, cdd, &s), 0);
-    assert_int_equal(couple_fluid_open(&cf, cdd, "/tmp", "mpsFluid",
+    assert_int_equal(couple_fluid_open(&cf, &s, cdd, "/tmp", "mpsFluid",
                                        CH_END), 0);
     int rc = couple_fluid_exchange(&cf, &s, 0, 0.0, CH_DT);
     print_message("refused: %s\n", sim_error_message());
@@ -673,7 +673,7 @@ static void test_channel_wrong_end_time(void **st)
     struct couple_fluid cf;
     make_fluid(&s, 20, 20, 0, CH_DP);
     assert_int_equal(couple_fluid_init(&cf, cdd, &s), 0);
-    int rc = couple_fluid_open(&cf, cdd, "/tmp", "mpsFluid", 0.015);
+    int rc = couple_fluid_open(&cf, &s, cdd, "/tmp", "mpsFluid", 0.015);
     print_message("refused: %s\n", sim_error_message());
     assert_int_equal(rc, SIM_ERR_PEER);
     assert_non_null(strstr(sim_error_message(), "endTime"));

@@ -1,9 +1,9 @@
-/* test_couple_output.c — the coupling fields of the output
- * (couple_output.h): the fluid's reaction -V_i f_A,i snapshot before
- * mps_step() and put back in the particle order of the written cloud
- * (renumbered and with a particle dropped, against a direct lookup), the
- * unchanged-order fast path, and the grains' slip u_k - v_k (0 for a dry
- * grain; nothing consistent to write after a grain was removed). */
+/* test_couple_output.c — the coupling fields of the output: the fluid's
+ * reaction -V_i f_A,i (couple_fluid_reaction_field; 0 beyond the pairs'
+ * particles, V_i = phi_i Vp with volume fractions), which as a field of
+ * the particles' store follows them through a renumbering and the removal
+ * of a particle; and the grains' slip u_k - v_k (0 for a dry grain;
+ * nothing consistent to write after a grain was removed). */
 #include <setjmp.h>
 #include <stdarg.h>
 #include <stddef.h>
@@ -14,9 +14,9 @@
 
 #include "couplingDem/couple_dem.h"
 #include "couplingMps/couple_fluid.h"
-#include "couplingMps/couple_output.h"
 #include "dem/dem.h"
 #include "mps/mps.h"
+#include "particles/store.h"
 
 #define N 257
 
@@ -34,44 +34,53 @@ static void test_reaction_renumbered(void **state)
     (void)state;
     static struct couple_fluid cf;
     static struct mps_particles P;
-    static int64_t id[N], id0[N];
-    static double fA[3 * N];
-    struct couple_output o = { 0 };
-    double *out;
+    static double fA[3 * N], phi[N];
+    static int64_t id0[N];
+    static int32_t perm[N];
+    struct store st;
+    int64_t *id = NULL;
+    double *F = NULL;
     memset(&cf, 0, sizeof cf);
+    store_init(&st, "test");
+    assert_int_equal(store_add(&st, "id", "", VTU_INT64, 1, 0, &id), 0);
+    assert_int_equal(store_add(&st, "reaction", "", VTU_FLOAT64, 3,
+                               STORE_WRITE, &F), 0);
+    assert_int_equal(store_resize(&st, N), 0);
     cf.Vp = 1.25e-7;
     cf.fA = fA;
-    cf.pairs.np = N;
+    cf.pairs.np = N - 3;        /* particles arrived after the pair search */
     for (int i = 0; i < N; i++) {
-        id0[i] = id[i] = 1000 + 7 * (int64_t)((i * 37) % N);  /* unique */
+        id0[i] = id[i] = 1000 + 7 * (int64_t)i;
+        phi[i] = 0.5 + (double)(next() % 1000) / 2000;
         for (int c = 0; c < 3; c++)
             fA[3 * i + c] = (double)(next() % 100000) - 5e4;
     }
     P.n = N;
     P.id = id;
-    assert_int_equal(couple_output_snapshot(&o, &cf, &P), 0);
-    /* same order: a copy */
-    assert_int_equal(couple_output_reaction(&o, &P, &out), 0);
-    for (int e = 0; e < 3 * N; e++)
-        assert_true(out[e] == -cf.Vp * fA[e]);
-    /* shuffle the ids (what mps_step's renumbering does), drop the last */
-    for (int i = N - 1; i > 0; i--) {
-        int j = (int)(next() % (uint64_t)(i + 1));
-        int64_t t = id[i];
-        id[i] = id[j];
-        id[j] = t;
-    }
-    P.n = N - 1;
-    memset(fA, 0, sizeof fA);   /* the snapshot must not read cf again */
-    assert_int_equal(couple_output_reaction(&o, &P, &out), 0);
-    for (int i = 0; i < P.n; i++) {
-        int k = 0;
-        while (id0[k] != id[i])
-            k++;
+    couple_fluid_reaction_field(&cf, &P, F);
+    for (int i = 0; i < N; i++)
         for (int c = 0; c < 3; c++)
-            assert_true(out[3 * i + c] == o.F[3 * k + c]);
+            assert_true(F[3 * i + c] == (i < N - 3 ? -cf.Vp * fA[3 * i + c]
+                                                   : 0.0));
+    P.phi = phi;
+    couple_fluid_reaction_field(&cf, &P, F);
+    assert_true(F[5] == -cf.Vp * phi[1] * fA[5]);
+    /* renumber (what mps_step does), then drop one particle */
+    for (int i = 0; i < N; i++)
+        perm[i] = (int32_t)((i * 37) % N);
+    assert_int_equal(store_permute(&st, perm, N), 0);
+    int32_t keep[N];
+    for (int i = 0; i < N - 1; i++)
+        keep[i] = i + (i >= 100);
+    assert_int_equal(store_compact(&st, keep, N - 1), 0);
+    for (int i = 0; i < N - 1; i++) {
+        int k = (int)((id[i] - 1000) / 7);
+        assert_true(id[i] == id0[k]);
+        for (int c = 0; c < 3; c++)
+            assert_true(F[3 * i + c] == (k < N - 3 ? -cf.Vp * phi[k]
+                                                     * fA[3 * k + c] : 0.0));
     }
-    couple_output_free(&o);
+    store_free(&st);
 }
 
 static void test_slip(void **state)

@@ -3,7 +3,9 @@
  * relative on random configurations, every step of a small MSS loop), and
  * the Model A / B terms of models.h: grain forces (34)/(35), prediction
  * accelerations, PPE and correction factors, couplingDict settings and the
- * run-time guards. */
+ * run-time guards; the halves a distributed run computes (each rank's
+ * per-grain sums of eqs. 32-33 and 36 added over two "ranks") against the
+ * one-process forms. */
 #include <setjmp.h>
 #include <stdarg.h>
 #include <stddef.h>
@@ -127,6 +129,73 @@ static void test_momentum_identity(void **state)
     assert_int_equal(coupling_reaction(&(struct coupling_pairs){ 0 }, NULL,
                                        F, 0.0, NULL, fA, NULL), SIM_ERR_INPUT);
     sim_error_clear();
+}
+
+/* Two "ranks" each own half of the particles: the per-grain sums over
+ * each half, added, give the reaction (36) and the Shepard fields (32-33)
+ * of the whole cloud to round-off (the order of the additions differs). */
+static void test_split_ranks(void **state)
+{
+    (void)state;
+    enum { NG = 200, NP = 6000 };
+    static double xg[3 * NG], xp[3 * NP], F[3 * NG], fA[3 * NP], fB[3 * NP];
+    static double eps[NP], u[3 * NP], gp[3 * NP], W[NG], W2[NG];
+    static double sums[COUPLING_SUMS * NG], s2[COUPLING_SUMS * NG];
+    static double e1[NG], u1[3 * NG], g1[3 * NG], e2[NG], u2[3 * NG],
+                  g2[3 * NG];
+    static uint8_t mask[NP], half[NP], w1[NG], w2[NG];
+    memset(xg, 0, sizeof xg);
+    memset(xp, 0, sizeof xp);
+    for (int k = 0; k < NG; k++)
+        for (int c = 0; c < 3; c++) {
+            xg[3 * k + c] = 0.05 * urand();
+            F[3 * k + c] = urand() - 0.5;
+        }
+    for (int i = 0; i < NP; i++) {
+        for (int c = 0; c < 3; c++) {
+            xp[3 * i + c] = 0.06 * urand() - 0.005;
+            u[3 * i + c] = urand() - 0.5;
+            gp[3 * i + c] = 1e4 * (urand() - 0.5);
+        }
+        eps[i] = 0.4 + 0.6 * urand();
+        mask[i] = urand() < 0.9;
+    }
+    struct coupling_pairs P = { 0 };
+    assert_int_equal(coupling_pairs_build(&P, 3, 0.011, NG, xg, NP, xp), 0);
+    int o1 = -1, o2 = -2;
+    assert_int_equal(coupling_reaction(&P, mask, F, 1e-6, eps, fA, &o1), 0);
+    for (int r = 0; r < 2; r++) {
+        for (int i = 0; i < NP; i++)
+            half[i] = mask[i] && (i < NP / 2) == (r == 0);
+        coupling_reaction_weights(&P, half, r ? W2 : W);
+        coupling_interp_sums(&P, half, eps, u, gp, r ? s2 : sums);
+    }
+    for (int k = 0; k < NG; k++)
+        W[k] += W2[k];
+    for (int e = 0; e < COUPLING_SUMS * NG; e++)
+        sums[e] += s2[e];
+    assert_int_equal(coupling_reaction_given(&P, W, mask, F, 1e-6, eps, fB,
+                                             &o2), 0);
+    assert_int_equal(o1, o2);
+    double big = 0;
+    for (int e = 0; e < 3 * NP; e++)
+        big = fmax(big, fabs(fA[e]));
+    assert_true(big > 0);
+    for (int e = 0; e < 3 * NP; e++)
+        assert_true(fabs(fA[e] - fB[e]) <= 1e-12 * big);
+    struct coupling_grain_fields G1 = { e1, u1, g1, w1 },
+                                 G2 = { e2, u2, g2, w2 };
+    coupling_interp_grains(&P, mask, eps, u, gp, &G1);
+    coupling_interp_finish(NG, sums, 1, &G2);
+    for (int k = 0; k < NG; k++) {
+        assert_int_equal(w1[k], w2[k]);
+        assert_true(fabs(e1[k] - e2[k]) <= 1e-12);
+        for (int c = 0; c < 3; c++) {
+            assert_true(fabs(u1[3 * k + c] - u2[3 * k + c]) <= 1e-12);
+            assert_true(fabs(g1[3 * k + c] - g2[3 * k + c]) <= 1e-8);
+        }
+    }
+    coupling_pairs_free(&P);
 }
 
 /* Reaction and porosity per particle against eqs. (36) and (31) written
@@ -540,6 +609,7 @@ int main(void)
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_drag_mean),
         cmocka_unit_test(test_momentum_identity),
+        cmocka_unit_test(test_split_ranks),
         cmocka_unit_test(test_against_direct),
         cmocka_unit_test(test_mss_loop),
         cmocka_unit_test(test_grain_force),
