@@ -23,8 +23,9 @@
  * the ghosts learn their owners' numbers, the matrix of the own rows gets
  * global columns, and the ranks solve it together (h->ops->solve).
  *
- * Before each step the ghosts take their owners' positions and
- * velocities. Where the neighbour list must be built again on some rank
+ * Each step ends with the ghosts at their owners' positions and
+ * velocities, the state that a coupled run's exchange between steps and
+ * the next step read. Where the neighbour list must be built again on some rank
  * (a particle moved more than half the skin), every rank rebuilds: the
  * particles that left the box escape (counted over all ranks), the
  * regions are cut afresh when the largest rank's weight exceeds the mean
@@ -91,11 +92,14 @@ int mps_distribute(struct mps_solver *s, struct pop_halo *h,
     s->S.renumber_interval = 0;   /* the own particles stay first */
     s->rebuild = 1;
     /* the whole cloud's list goes (its storage would stay as the run's
-     * peak on every rank); the first step builds this rank's */
+     * peak on every rank), and this rank's takes its place: what a
+     * coupled run's first exchange reads (Model A's pressure gradient),
+     * as one process reads the list its set-up built */
     mps_drop_list(s);
     s->P.n = (int)s->P.st.n;
     s->P.cap = (int)s->P.st.cap;
-    return mps_fit_work(s);
+    TRY(mps_fit_work(s));
+    return mps_neighbours(s);
 }
 
 int mps_halo_reach(struct mps_solver *s)
@@ -128,11 +132,9 @@ int mps_halo_prepare(struct mps_solver *s)
     if (!h)
         return SIM_OK;
     struct mps_particles *P = &s->P;
-    /* the ghosts move with their owners; while the list holds on every
-     * rank (the skin), so do the ghost sets, as the list's candidates do
-     * in one process */
-    TRY(mps_halo_refresh(s, P->x, 3 * sizeof *P->x));
-    TRY(mps_halo_refresh(s, P->u, 3 * sizeof *P->u));
+    /* the ghosts moved with their owners (the end of mps_step); while the
+     * list holds on every rank (the skin), so do the ghost sets, as the
+     * list's candidates do in one process */
     if (s->walls_move)
         TRY(mps_halo_refresh(s, P->normal, 3 * sizeof *P->normal));
     if (pop_halo_reduce1(h, mps_list_valid(s), POP_MIN) > 0)

@@ -226,6 +226,11 @@ int mps_step(struct mps_solver *s, double dt)
     TRY(s->S.shifting->apply(s, dt));
     if (s->soil)
         mps_soil_end(s, dt);
+    /* a ghost's row misses neighbours beyond the halo: the ghosts leave
+     * the step at their owners' positions and velocities, which the
+     * coupling reads between steps and the next step's rows */
+    TRY(mps_halo_refresh(s, s->P.x, 3 * sizeof *s->P.x));
+    TRY(mps_halo_refresh(s, s->P.u, 3 * sizeof *s->P.u));
     double t4 = omp_get_wtime();
     s->t.neighbours += t1 - t0;
     s->t.explicit_ += t2 - t1;

@@ -22,15 +22,20 @@
 /* A rank that stops on an error (app_fatal exits) takes the job down: the
  * others may wait in a collective for it. A complete run finalises
  * before it exits, so this aborts only after an error. */
-static int mpi_started;
+static int mpi_started, mpi_rank;
 
 static void abort_job(void)
 {
     int init = 0, done = 0;
     MPI_Initialized(&init);
     MPI_Finalized(&done);
-    if (init && !done)
-        MPI_Abort(MPI_COMM_WORLD, 1);
+    if (!init || done)
+        return;
+    /* ranks that stop together (a coupled exchange that failed on rank
+     * 0) leave rank 0 the time to log why before the job goes down */
+    if (mpi_rank > 0)
+        sleep(2);
+    MPI_Abort(MPI_COMM_WORLD, 1);
 }
 #endif
 
@@ -54,6 +59,7 @@ static int start_parallel(struct solver *sv, int argc, char **argv)
     sv->distributed = 1;
     atexit(abort_job);
     MPI_Comm_rank(MPI_COMM_WORLD, &sv->rank);
+    mpi_rank = sv->rank;
     if (sv->rank > 0)
         log_set_quiet(1);
     return SIM_OK;
@@ -98,7 +104,9 @@ static int create_time(struct solver *sv)
                  sv->ops->cloud);
     else
         snprintf(own, sizeof own, "%s.vtu", sv->ops->cloud);
-    snprintf(peer, sizeof peer, "%s.vtu",
+    /* the peer may run distributed (its cloud in pieces) */
+    snprintf(peer, sizeof peer, "%s.vtu|%s.pvtu",
+             sv->ops->peer_cloud ? sv->ops->peer_cloud : "",
              sv->ops->peer_cloud ? sv->ops->peer_cloud : "");
     const char *const alone[] = { own, NULL };
     const char *const both[] = { own, peer, NULL };
@@ -206,8 +214,9 @@ static int coupled_stop(struct solver *sv, int rc)
     snprintf(msg, sizeof msg, "%s", sim_error_message());
     if ((!c->keeps_state || c->keeps_state(rc)) && sv->rt.step > 0
         && solver_write(sv, prefix) == SIM_OK)
-        log_info("Last complete state (t = %s s) written to %s%s/%s.vtu",
-                 sv->rt.name, prefix, sv->rt.name, sv->ops->cloud);
+        log_info("Last complete state (t = %s s) written to %s%s/%s.%s",
+                 sv->rt.name, prefix, sv->rt.name, sv->ops->cloud,
+                 sv->distributed ? "pvtu" : "vtu");
     c->close(sv, rc);
     return sim_error(rc, "%s", msg);
 }

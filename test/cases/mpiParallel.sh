@@ -34,11 +34,27 @@
 #                     system/decomposeParDict (2), logs to log.mpsFluid and
 #                     refuses to run again while that log exists
 #   mpi_refused       -parallel with the build without MPI, with shifting
-#                     (system/mpsSchemes, its line), with a coupled case,
-#                     with maxImbalance 0.5 (system/decomposeParDict, its
-#                     line): exit 1, the message, no time directory
-NAME=mpiParallel; . "$(dirname "$0")/lib/case.sh"
-need_bins genParticles mpsFluid vtuInfo
+#                     (system/mpsSchemes, its line), with maxImbalance 0.5
+#                     (system/decomposeParDict, its line): exit 1, the
+#                     message, no time directory
+# Coupled (mpsFluid on N ranks beside demSolid, runTandem -np N; the grains
+# then feel the fluid through sums over the ranks, so the bounds above hold
+# for the grains too: measured 7.7e-9 m and 1.2e-3 Pa for the fluid and
+# 6e-8 m for the grains after 0.1 s on 4 ranks, 3e-11 m and 2.4e-5 Pa in
+# the root case after 0.02 s on 2 ranks):
+#   mpi_coupled_2d    2-D two-phase dam break (21 beads, volume fractions),
+#                     Model B on 1, 2 and 4 ranks and Model A on 2, to
+#                     0.1 s: fluid by id, grain centres within 1e-5 m, every
+#                     function object within 1e-5
+#   mpi_coupled_restart  Model B, 4 ranks to 0.05 s, then 2 ranks from
+#                     there: within 1e-6 m of the 4-rank run to 0.1 s
+#   mpi_coupled_root  the root case (3-D, 25 696 particles, 1 026 grains) to
+#                     0.02 s on 2 ranks against one process, as above
+#   mpi_coupled_peer_killed  demSolid killed (SIGKILL) mid-run: the
+#                     2-rank mpsFluid ends within 60 s, non-zero, naming the
+#                     peer
+NAME=mpiParallel; . "$(dirname "$0")/lib/tandem.sh"
+need_bins genParticles mpsFluid demSolid vtuInfo
 MPI_FLUID=${MPI_FLUID:-$ROOT/bin-hypre/mpsFluid}
 [ -x "$MPI_FLUID" ] || { fail "$NAME" "$MPI_FLUID not built (make MPI=1)"; exit 1; }
 command -v mpirun > /dev/null || { fail "$NAME" "mpirun not found"; exit 1; }
@@ -170,7 +186,7 @@ if [ -n "$victim" ]; then
 else
     fail mpi_rank_killed "no rank of the run found: $(tail -n 3 "$F/log.par2")"
 fi
-wait
+wait 2> /dev/null
 
 # --- runParallel (RunFunctions, as OpenFOAM's) ------------------------------------
 RP="$TMP/runParallel"
@@ -203,10 +219,109 @@ rm -f "$c/log.par2"; par "$c" 2; out=$(cat "$c/log.par2")
 extra=$(cd "$c" && ls -d [0-9]* | grep -v '^0$')
 echo "$out" | grep -qE "decomposeParDict:3:[0-9]+: maxImbalance 0.5: give a factor > 1" && [ -z "$extra" ] \
     && pass mpi_refused_imbalance || fail mpi_refused_imbalance "$(echo "$out" | grep -A1 FATAL | tail -n 1) time dirs '$extra'"
-C="$TMP/coupled"
-case_copy "$C" mpsDem/singleGrainSettling 0.01 || fail mpi_refused_coupled "case set-up failed"
-par "$C" 2; out=$(cat "$C/log.par2")
-extra=$(cd "$C" && ls -d [0-9]* | grep -v '^0$')
-echo "$out" | grep -q "system/couplingDict: a coupled run does not run distributed" && [ -z "$extra" ] \
-    && pass mpi_refused_coupled || fail mpi_refused_coupled "$(echo "$out" | grep -A1 FATAL | tail -n 1) time dirs '$extra'"
+# --- coupled: mpsFluid on N ranks with demSolid (runTandem -np N) -------------
+# tandem DIR N: runTandem with mpsFluid on N ranks (0: one process)
+tandem() {
+    local np=""; [ "$2" != 0 ] && np="-np $2"
+    (cd "$1" && OMP_NUM_THREADS=1 timeout 300 bash -c ". '$ROOT/bin/tools/RunFunctions'; runTandem $np mpsFluid demSolid" > log.tandem 2>&1)
+}
+# grains DEM_A DEM_B TOL: empty when every grain centre agrees within TOL [m]
+grains() {
+    paste <("$ROOT/bin/vtuInfo" -dump "$1" | awk '!/^#/ && NF >= 3 { print $1, $2, $3 }') \
+          <("$ROOT/bin/vtuInfo" -dump "$2" | awk '!/^#/ && NF >= 3 { print $1, $2, $3 }') |
+    awk -v t="$3" '{ n++; for (k = 1; k <= 3; k++) { e = $k - $(k + 3); e = e < 0 ? -e : e; if (e > m) m = e } }
+        END { if (!n || !(m <= t)) printf "grains: %d, max |dx| %.3g m", n, m }'
+}
+# same_coupled REF DIR TIME: fluid, grains and every function object of
+# DIR against REF at TIME
+same_coupled() {
+    local fl d
+    fl="$2/$3/fluid.pvtu"; [ -f "$fl" ] || fl="$2/$3/fluid.vtu"
+    d=$(differ "$1/$3/fluid.vtu" "$fl" 1e-5 1)
+    d+=$(grains "$1/$3/dem.vtu" "$2/$3/dem.vtu" 1e-5)
+    for f in $(cd "$1" && find postProcessing -name '*.dat'); do
+        [ -f "$2/$f" ] || { d+=" no $f;"; continue; }
+        r=$(series "$1/$f" "$2/$f" 1e-5); [ -n "$r" ] && d+=" $f: $r;"
+    done
+    echo "$d"
+}
+CB="$TMP/coupled_B"
+case_2d "$CB" "$ROOT/system/controlDict" <<'EOD'
+regions
+(
+    tank   { type tankWall; shape box; min (0 0 0); max (0.2 0.15 0); open (ymax); }
+    column { type fluid; shape box; min (0 0 0); max (0.05 0.1 0); hydrostaticPressure yes; }
+    beads  { type grains; shape box; min (0.0025 0.0005 0); max (0.0475 0.0205 0);
+             diameter 0.005; lattice cubic; spacing 0.0065; }
+);
+EOD
+"$ROOT/bin/dictTool" "$CB/system/controlDict" -set endTime=0.1 -set writeInterval=0.05 > /dev/null
+sed -i "s/^timeout .*/timeout 30;/" "$CB/system/couplingDict"
+(cd "$CB" && "$ROOT/bin/genParticles" > log.genParticles 2>&1) || fail mpi_coupled_2d "genParticles failed"
+CA="$TMP/coupled_A"
+cp -r "$CB" "$CA"
+"$ROOT/bin/dictTool" "$CA/system/couplingDict" -set model=A > /dev/null
+msg=""
+for m in A B; do
+    for n in 0 1 2 4; do
+        [ $m = A ] && [ $n != 0 ] && [ $n != 2 ] && continue
+        c="$TMP/coupled_${m}$n"; cp -r "$TMP/coupled_$m" "$c"
+        tandem "$c" $n || { msg+=" $m np $n failed: $(fatal_of "$c");"; continue; }
+        [ $n = 0 ] && continue
+        d=$(same_coupled "$TMP/coupled_${m}0" "$c" 0.1)
+        grep -q "Distributed over $n ranks" "$c/log.mpsFluid" || d+=" not on $n ranks;"
+        [ -n "$d" ] && msg+=" model $m np $n: $d;"
+    done
+done
+[ -z "$msg" ] && pass mpi_coupled_2d || fail mpi_coupled_2d "$msg"
+
+# restart of a coupled run on another number of ranks
+CR="$TMP/coupled_restart"
+cp -r "$CB" "$CR"
+"$ROOT/bin/dictTool" "$CR/system/controlDict" -set endTime=0.05 > /dev/null
+ok=1
+tandem "$CR" 4 || ok=0
+"$ROOT/bin/dictTool" "$CR/system/controlDict" -set endTime=0.1 -set startFrom=latestTime > /dev/null
+rm -f "$CR"/log.mpsFluid "$CR"/log.demSolid
+[ $ok = 1 ] && { tandem "$CR" 2 || ok=0; }
+if [ $ok = 1 ]; then
+    d=$(differ "$TMP/coupled_B4/0.1/fluid.pvtu" "$CR/0.1/fluid.pvtu" 1e-6 0.1)
+    d+=$(grains "$TMP/coupled_B4/0.1/dem.vtu" "$CR/0.1/dem.vtu" 1e-6)
+    [ -z "$d" ] && grep -q "Starting from the latest time, 0.05" "$CR/log.mpsFluid" && pass mpi_coupled_restart \
+        || fail mpi_coupled_restart "${d:-no restart from 0.05}"
+else
+    fail mpi_coupled_restart "a run failed: $(fatal_of "$CR")"
+fi
+
+# the root case (3-D, Model B, 1026 grains), coarse and short, on 2 ranks
+RC="$TMP/root_case"
+mkdir -p "$RC" && cp -r "$ROOT"/system "$ROOT"/constant "$RC"/ \
+    && "$ROOT/bin/dictTool" "$RC/system/controlDict" -set endTime=0.02 -set writeInterval=0.01 > /dev/null \
+    && sed -i "s/^timeout .*/timeout 60;/" "$RC/system/couplingDict" \
+    && (cd "$RC" && "$ROOT/bin/genParticles" > log.genParticles 2>&1) || fail mpi_coupled_root "case set-up failed"
+cp -r "$RC" "$RC.2"
+if tandem "$RC" 0 && tandem "$RC.2" 2; then
+    d=$(same_coupled "$RC" "$RC.2" 0.02)
+    [ -z "$d" ] && pass mpi_coupled_root || fail mpi_coupled_root "$d"
+else
+    fail mpi_coupled_root "a run failed: $(fatal_of "$RC") $(fatal_of "$RC.2")"
+fi
+
+# the peer dies: every rank stops with the channel's message, no hang
+CK="$TMP/coupled_kill"
+cp -r "$CB" "$CK"
+"$ROOT/bin/dictTool" "$CK/system/controlDict" -set endTime=5 > /dev/null
+(cd "$CK" && OMP_NUM_THREADS=1 timeout 120 mpirun -np 2 "$MPI_FLUID" -parallel > log.mpsFluid 2>&1; echo $? > "$CK/rc") &
+(cd "$CK" && OMP_NUM_THREADS=1 timeout 120 "$ROOT/bin/demSolid" > log.demSolid 2>&1) &
+for _ in $(seq 1 120); do grep -q "^Time = " "$CK/log.mpsFluid" 2>/dev/null && break; sleep 0.5; done
+for p in $(ps -eo pid,comm | awk '$2 == "demSolid" { print $1 }'); do
+    [ "$(readlink /proc/$p/cwd)" = "$CK" ] && kill -9 "$p"
+done
+t0=$(date +%s)
+while [ ! -s "$CK/rc" ] && [ $(( $(date +%s) - t0 )) -lt 60 ]; do sleep 0.5; done
+rc=$(cat "$CK/rc" 2>/dev/null)
+[ -n "$rc" ] && [ "$rc" -ne 0 ] && [ "$rc" -ne 124 ] && grep -qi "peer\|demSolid" "$CK/log.mpsFluid" \
+    && pass mpi_coupled_peer_killed \
+    || fail mpi_coupled_peer_killed "mpirun status '${rc:-none after 60 s}': $(grep -A1 FATAL "$CK/log.mpsFluid" | tail -n 1)"
+wait 2> /dev/null
 exit $fails

@@ -11,7 +11,7 @@
 #   a restart from 0.02 s gives the continuous run's 0.04 s files exactly;
 #   a case without system/couplingDict runs demSolid alone (no channel)
 #   and its dem.vtu has the 5 grain fields only, where the coupled run's
-#   dem.vtu and fluid.vtu have the coupling fields (couple_output.h).
+#   dem.vtu and fluid.vtu have the coupling fields (couple_fluid.h, couple_dem.h).
 # MPSFLUID / DEMSOLID override the programs (default bin/).
 NAME=mpsDemSettling
 . "$(dirname "$0")/lib/tandem.sh"
@@ -83,7 +83,7 @@ if (cd "$c" && timeout 60 "$DEMSOLID" > log.demSolid.alone 2>&1) \
 else
     fail mpsDemSettling_uncoupled "demSolid alone: $(tail -3 "$c/log.demSolid.alone" | tr '\n' ' ')"
 fi
-# coupling fields (couple_output.h) in the coupled output only: the
+# coupling fields (couple_fluid.h, couple_dem.h) in the coupled output only: the
 # standalone run rewrote 0.01/dem.vtu without them
 cf=$("$ROOT/bin/vtuInfo" -case "$c" 0.35/dem.vtu 0.35/fluid.vtu 2>&1 \
      | grep -c '^field \(porosity\|fluidVelocity\|slipVelocity\|drag\|buoyancy\|reaction\) ')
