@@ -194,26 +194,39 @@ int fo_list_create(const struct dict *functions,
     return SIM_OK;
 }
 
-static int is_due(struct fo_entry *e, const struct fo_scene *s, int write_time)
+/* Is entry e due at (time, step)? mark: record a runTime entry's
+ * interval as done. */
+static int is_due(struct fo_entry *e, double time, long step, double dt,
+                  int write_time, int mark)
 {
     /* Half a step of slack so that a schedule edge is not missed by
      * round-off in the solver's time. */
-    double slack = 0.5 * s->dt;
-    if (s->time < e->t_start - slack || s->time > e->t_end + slack)
+    double slack = 0.5 * dt;
+    if (time < e->t_start - slack || time > e->t_end + slack)
         return 0;
     switch (e->control) {
     case FO_TIME_STEP:
-        return s->step % (long)e->interval == 0;
+        return step % (long)e->interval == 0;
     case FO_WRITE_TIME:
         return write_time;
     case FO_RUN_TIME: {
-        long k = (long)floor(s->time / e->interval + 1e-6);
+        long k = (long)floor(time / e->interval + 1e-6);
         if (k <= e->last_index)
             return 0;
-        e->last_index = k;
+        if (mark)
+            e->last_index = k;
         return 1;
     }
     }
+    return 0;
+}
+
+int fo_list_due(struct fo_list *l, double time, long step, double dt,
+                int write_time)
+{
+    for (int i = 0; l && i < l->n; i++)
+        if (is_due(&l->e[i], time, step, dt, write_time, 0))
+            return 1;
     return 0;
 }
 
@@ -222,7 +235,7 @@ int fo_list_execute(struct fo_list *l, const struct fo_scene *s,
 {
     for (int i = 0; i < l->n; i++) {
         struct fo_entry *e = &l->e[i];
-        if (!is_due(e, s, write_time))
+        if (!is_due(e, s->time, s->step, s->dt, write_time, 1))
             continue;
         int rc = e->ops->execute(e->data, s, e->out);
         if (rc != SIM_OK) {

@@ -86,6 +86,11 @@ int fo_list_create(const struct dict *functions, const struct fo_ops *const *con
  * flushed to disk at each call. */
 int fo_list_execute(struct fo_list *l, const struct fo_scene *s, int write_time);
 
+/* Would fo_list_execute run some entry at (time, step)? (l may be NULL.)
+ * A distributed solver gathers its cloud only for those steps. */
+int fo_list_due(struct fo_list *l, double time, long step, double dt,
+                int write_time);
+
 void fo_list_free(struct fo_list *l);
 
 /* Generic function objects that need only a cloud (cloudInfo: counts per

@@ -282,7 +282,9 @@ int mps_settings_read(const struct dict *transport, const struct dict *g,
  * the steps then exchange what the neighbours' rows read, and the PPE is
  * solved over the ranks by h->ops->solve. Refused (SIM_ERR_INPUT, naming
  * the setting) for what does not run distributed yet: soil, removed
- * wall patches, shifting, extrapolated surface or dummy pressure; located in schemes (system/mpsSchemes, may be NULL)
+ * wall patches, the extrapolated surface pressure (its fit runs in index
+ * order, one surface particle after another); located in schemes
+ * (system/mpsSchemes, may be NULL)
  * where the setting is its key. Renumbering is off (the own particles
  * stay first). */
 int mps_distribute(struct mps_solver *s, struct pop_halo *h,

@@ -13,7 +13,8 @@
  *   number density and surface test        n, fs   (the PPE's Dirichlet
  *                                                   neighbours, its pattern)
  *   PPE, then the dummies' pressure        P       (the gradient, the
- *                                                   dummies' partner value)
+ *   (extrapolated: the walls' first)                dummies' partner value)
+ *   the move, when shifting follows        r       (the shift's sums)
  *   volume exchange (coupled, volume-     phi, inv_eps, u
  *   FractionRelaxation > 0)
  *
@@ -43,7 +44,6 @@
 #include "core/log.h"
 #include "mps/mps.h"
 #include "mps/mps_impl.h"
-#include "mps/stabiliser/stabiliser.h"
 
 int mps_own(const struct mps_solver *s)
 {
@@ -75,15 +75,9 @@ int mps_distribute(struct mps_solver *s, struct pop_halo *h,
     if (s->soil)
         return not_yet(NULL, NULL, "constant/soilProperties", "a case with "
                        "soil particles");
-    if (S->shifting != &mps_stabiliser_none)
-        return not_yet(schemes, "shifting", "system/mpsSchemes", "shifting "
-                       "other than none");
     if (S->fs_pressure == MPS_FS_P_EXTRAPOLATED)
         return not_yet(fs, "pressure", "system/mpsSchemes", "freeSurface { "
                        "pressure extrapolated; }");
-    if (S->dummy_pressure == MPS_DUMMY_P_EXTRAPOLATED)
-        return not_yet(schemes, "dummyPressure", "system/mpsSchemes",
-                       "dummyPressure extrapolated");
     for (int k = 0; k < S->n_wall_motion && S->wall_motion; k++)
         if (isfinite(S->wall_motion[k].remove_at))
             return not_yet(NULL, NULL, "system/particleDict", "a wall region "

@@ -39,6 +39,8 @@ int mps_neighbours(struct mps_solver *s);
  * a uniform phi/eps (volume_exchange.c); nothing unless phi_relax_time > 0
  * and the particles hold phi. Uses lap and div as scratch. */
 int mps_volume_exchange(struct mps_solver *s, double dt);
+/* The largest fluid speed [m/s] (of every rank in a distributed run). */
+double mps_max_fluid_speed(const struct mps_solver *s);
 
 /* After every change of the list: room for its rows in the computed
  * weights (mps_w), or the stored weights of every radius (soil). */
@@ -48,7 +50,7 @@ int mps_weights(struct mps_solver *s);
 int mps_ppe_solve(struct mps_solver *s, double dt);
 
 /* Dummy pressure from the partner wall particle (or 0). */
-void mps_dummy_pressure(struct mps_solver *s);
+int mps_dummy_pressure(struct mps_solver *s);
 
 /* Nearest wall particle of every dummy; where a patch moves or is
  * removed, only within the dummy's own patch (walls.c). */

@@ -217,12 +217,14 @@ int mps_step(struct mps_solver *s, double dt)
     if (s->S.clip_negative)
         for (int i = 0; i < s->P.n; i++)
             s->P.p[i] = fmax(s->P.p[i], 0.0);
-    mps_dummy_pressure(s);
+    TRY(mps_dummy_pressure(s));
     TRY(mps_halo_refresh(s, s->P.p, sizeof *s->P.p));
     correct(s, dt);
     if (s->S.predictor)
         predict_positions(s, dt, -1.0);   /* back to r^m, then r^m + dt u */
     move(s, dt);
+    if (s->S.shifting != &mps_stabiliser_none)   /* it reads r_j */
+        TRY(mps_halo_refresh(s, s->P.x, 3 * sizeof *s->P.x));
     TRY(s->S.shifting->apply(s, dt));
     if (s->soil)
         mps_soil_end(s, dt);

@@ -38,14 +38,18 @@ static double nu_max(const struct mps_settings *S)
     return S->nu;
 }
 
+double mps_max_fluid_speed(const struct mps_solver *s)
+{
+    /* the own particles, over the ranks: a ghost's velocity in the step
+     * is its row's, not its owner's (mps_halo.c) */
+    double u = pop_max_norm3(mps_own(s), s->P.u, s->P.type, MPS_FLUID);
+    return s->halo ? pop_halo_reduce1(s->halo, u, POP_MAX) : u;
+}
+
 double mps_propose_dt(const struct mps_solver *s, double max_co)
 {
-    /* the own particles: a ghost's velocity after the step is its row's,
-     * not its owner's (mps_halo.c) */
-    double u = pop_max_norm3(mps_own(s), s->P.u, s->P.type, MPS_FLUID);
-    if (s->halo)
-        u = pop_halo_reduce1(s->halo, u, POP_MAX);
-    return pop_stable_dt(s->dp, nu_max(&s->S), u, gnorm(&s->S), max_co);
+    return pop_stable_dt(s->dp, nu_max(&s->S), mps_max_fluid_speed(s),
+                         gnorm(&s->S), max_co);
 }
 
 static double fluid_height(const struct mps_particles *P)

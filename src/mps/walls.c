@@ -93,7 +93,7 @@ static int extrapolate(const struct mps_solver *s,
                                 MPS_FLUID, s->S.rho, s->S.g, i, p);
 }
 
-void mps_dummy_pressure(struct mps_solver *s)
+int mps_dummy_pressure(struct mps_solver *s)
 {
     struct mps_particles *P = &s->P;
     const int mode = s->S.dummy_pressure;
@@ -105,6 +105,8 @@ void mps_dummy_pressure(struct mps_solver *s)
         for (int i = 0; i < P->n; i++)
             if (P->type[i] == MPS_WALL && !extrapolate(s, &Wg, i, &P->p[i]))
                 P->p[i] = 0;
+        /* a dummy's partner may be a ghost */
+        TRY(mps_halo_refresh(s, P->p, sizeof *P->p));
     }
 #pragma omp parallel for schedule(static)
     for (int i = 0; i < P->n; i++) {
@@ -125,6 +127,7 @@ void mps_dummy_pressure(struct mps_solver *s)
                 p += rho * g[q] * (P->x[3 * i + q] - P->x[3 * w + q]);
         P->p[i] = p;
     }
+    return SIM_OK;
 }
 
 void mps_wall_forces(const struct mps_solver *s, int npatch, double *force)

@@ -237,6 +237,22 @@ static void log_progress(struct solver *sv)
     time_log_progress(&sv->rt, extra);
 }
 
+/* Are the scene and the function objects due at this step? Always in one
+ * process; a distributed run gathers its cloud on rank 0 for them, which
+ * costs O(N) there, only at the steps where one of them runs (rank 0
+ * holds the list and tells the others). */
+static int scene_due(struct solver *sv)
+{
+    if (!sv->distributed)
+        return 1;
+    int due = root(sv) && fo_list_due(sv->fos, sv->rt.value, sv->rt.step,
+                                      sv->rt.dt, sv->rt.write_now);
+#ifdef MPSDEM_HAVE_MPI
+    MPI_Bcast(&due, 1, MPI_INT, 0, MPI_COMM_WORLD);
+#endif
+    return due;
+}
+
 static int step(struct solver *sv)
 {
     const struct solver_ops *o = sv->ops;
@@ -252,9 +268,11 @@ static int step(struct solver *sv)
         return coupled_stop(sv, rc);
     if (o->check)
         TRY(o->check(sv));
-    TRY(o->refresh_scene(sv));
-    if (root(sv))
-        TRY(fo_list_execute(sv->fos, &sv->scene, sv->rt.write_now));
+    if (scene_due(sv)) {
+        TRY(o->refresh_scene(sv));
+        if (root(sv))
+            TRY(fo_list_execute(sv->fos, &sv->scene, sv->rt.write_now));
+    }
     if (sv->rt.write_now) {
         if (o->prepare_write)
             TRY(o->prepare_write(sv));

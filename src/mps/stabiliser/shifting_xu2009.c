@@ -19,6 +19,7 @@
 
 #include "core/error.h"
 #include "mps/mps.h"
+#include "mps/mps_impl.h"
 #include "mps/soil/soil_step.h"
 #include "mps/stabiliser/stabiliser.h"
 
@@ -27,13 +28,7 @@ static int apply_shifting(struct mps_solver *s, double dt)
     struct mps_particles *P = &s->P;
     const struct neighbour_list *nl = &s->nl;
     const double re = s->S.re_grad * s->dp, r0 = s->dp;
-    double umax = 0;
-#pragma omp parallel for reduction(max : umax)
-    for (int i = 0; i < P->n; i++)
-        if (P->type[i] == MPS_FLUID)
-            umax = fmax(umax, sqrt(P->u[3*i]*P->u[3*i] + P->u[3*i+1]*P->u[3*i+1]
-                                   + P->u[3*i+2]*P->u[3*i+2]));
-    const double ca = s->S.shifting_coeff * umax * dt;
+    const double ca = s->S.shifting_coeff * mps_max_fluid_speed(s) * dt;
     double *dr = s->grad;
     const int32_t *fixed = mps_soil_unshifted(s);
 #pragma omp parallel for schedule(static)

@@ -8,6 +8,7 @@
 #include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
+#include <math.h>
 #include <string.h>
 #include <unistd.h>
 
@@ -120,6 +121,49 @@ static void test_schedules(void **state)
     dict_free(d);
 }
 
+/* fo_list_due: the steps at which some entry would run, without marking
+ * a runTime interval as done (asking twice gives the same answer, and the
+ * execution after it still writes the row). */
+static void test_due(void **state)
+{
+    (void)state;
+    const char *text =
+        "functions {\n"
+        "  every5  { type cloudInfo; writeControl timeStep; writeInterval 5; }\n"
+        "  runTime { type cloudInfo; writeControl runTime; writeInterval 0.07; }\n"
+        "  atWrite { type cloudInfo; writeControl writeTime; }\n"
+        "}\n";
+    struct dict *d;
+    const struct dict *fd;
+    assert_int_equal(dict_read_string(text, strlen(text), "controlDict", &d), 0);
+    assert_int_equal(dict_get_dict(d, "functions", &fd), 0);
+    struct fo_scene s;
+    struct vtu_cloud c;
+    struct vtu_field f;
+    make_scene(&s, &c, &f);
+    struct fo_list *l;
+    assert_int_equal(fo_list_create(fd, tables, &s, tmpdir, 0.0, 6, &l), 0);
+    assert_int_equal(fo_list_due(NULL, 0.0, 0, 0.01, 1), 0);
+    int last_k = -1, n_due = 0;
+    for (long step = 0; step <= 100; step++) {
+        s.step = step;
+        s.time = step * 0.01;
+        int k = (int)floor(s.time / 0.07 + 1e-6), write = step % 3 == 0;
+        int want = step % 5 == 0 || k > last_k || write;
+        last_k = k;
+        assert_int_equal(fo_list_due(l, s.time, step, 0.01, write), want);
+        assert_int_equal(fo_list_due(l, s.time, step, 0.01, write), want);
+        n_due += want;
+        assert_int_equal(fo_list_execute(l, &s, write), 0);
+    }
+    fo_list_free(l);
+    char p[256];
+    snprintf(p, sizeof p, "%s/postProcessing/runTime/0/cloudInfo.dat", tmpdir);
+    assert_int_equal(count_rows(p), 15);   /* k = 0 ... 14 */
+    assert_true(n_due > 34 && n_due < 101);
+    dict_free(d);
+}
+
 static void test_cloud_info_row(void **state)
 {
     (void)state;
@@ -184,6 +228,7 @@ int main(void)
     log_set_quiet(1);
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_schedules),
+        cmocka_unit_test(test_due),
         cmocka_unit_test(test_cloud_info_row),
         cmocka_unit_test(test_errors),
     };
