@@ -33,12 +33,13 @@
 #   mpi_runParallel   RunFunctions' runParallel takes the ranks from
 #                     system/decomposeParDict (2), logs to log.mpsFluid and
 #                     refuses to run again while that log exists
-#   mpi_same_shifting damBreak2D with dummyPressure extrapolated and shifting
-#                     xu2009, then lind2012, on 2 ranks to 0.1 s: within the
-#                     bounds (measured 2.5e-9 m and 1.0e-9 m)
+#   mpi_same_shifting damBreak2D with the extrapolated dummy pressure and
+#                     shifting xu2009, then lind2012, on 2 ranks to 0.1 s:
+#                     within the bounds (measured 2.5e-9 m and 1.0e-9 m)
 #   mpi_refused       -parallel with the build without MPI, with the
 #                     extrapolated surface pressure (system/mpsSchemes, its
-#                     line: its fit runs in index order), with maxImbalance 0.5
+#                     line), with soil (constant/soilProperties), with
+#                     maxImbalance 0.5
 #                     (system/decomposeParDict, its line): exit 1, the
 #                     message, no time directory
 # Coupled (mpsFluid on N ranks beside demSolid, runTandem -np N; the grains
@@ -227,12 +228,19 @@ extra=$(cd "$c" && ls -d [0-9]* | grep -v '^0$')
     && pass mpi_refused_serial_build || fail mpi_refused_serial_build "rc $rc: $(echo "$out" | grep -A1 FATAL | tail -n 1)"
 cp "$c/system/mpsSchemes" "$c/mpsSchemes.keep"
 "$ROOT/bin/dictTool" "$c/system/mpsSchemes" -new -set freeSurface/pressure=extrapolated > /dev/null
-out=$(par "$c" 2 2>&1; cat "$c/log.par2"); rc=$?
+out=$(par "$c" 2 2>&1; cat "$c/log.par2")
 extra=$(cd "$c" && ls -d [0-9]* | grep -v '^0$')
 echo "$out" | grep -qE "system/mpsSchemes:[0-9]+:[0-9]+: freeSurface \{ pressure extrapolated; \} does not run distributed" && [ -z "$extra" ] \
     && ! grep -q "^End" "$c/log.par2" && pass mpi_refused_surface \
     || fail mpi_refused_surface "$(echo "$out" | grep -A1 FATAL | tail -n 1) time dirs '$extra'"
 mv "$c/mpsSchemes.keep" "$c/system/mpsSchemes"
+SO="$TMP/soil"
+case_copy "$SO" mpsFluid/soilLayerStill 0.01 || fail mpi_refused_soil "case set-up failed"
+par "$SO" 2; out=$(cat "$SO/log.par2")
+extra=$(cd "$SO" && ls -d [0-9]* | grep -v '^0$')
+echo "$out" | grep -q "constant/soilProperties: a case with soil particles does not run distributed" && [ -z "$extra" ] \
+    && ! grep -q "^End" "$SO/log.par2" && pass mpi_refused_soil \
+    || fail mpi_refused_soil "$(echo "$out" | grep -A1 FATAL | tail -n 1) time dirs '$extra'"
 printf 'FoamFile { version 2.0; format ascii; class dictionary; object decomposeParDict; }\nnumberOfSubdomains 2;\nmaxImbalance 0.5;\n' \
     > "$c/system/decomposeParDict"
 rm -f "$c/log.par2"; par "$c" 2; out=$(cat "$c/log.par2")
@@ -332,7 +340,7 @@ CK="$TMP/coupled_kill"
 cp -r "$CB" "$CK"
 "$ROOT/bin/dictTool" "$CK/system/controlDict" -set endTime=5 > /dev/null
 (cd "$CK" && OMP_NUM_THREADS=1 timeout 120 mpirun -np 2 "$MPI_FLUID" -parallel > log.mpsFluid 2>&1; echo $? > "$CK/rc") &
-(cd "$CK" && OMP_NUM_THREADS=1 timeout 120 "$ROOT/bin/demSolid" > log.demSolid 2>&1; true) &
+(cd "$CK" && OMP_NUM_THREADS=1 timeout 120 "$ROOT/bin/demSolid" > log.demSolid 2>&1; true) 2> /dev/null &
 for _ in $(seq 1 120); do grep -q "^Time = " "$CK/log.mpsFluid" 2>/dev/null && break; sleep 0.5; done
 for p in $(ps -eo pid,comm | awk '$2 == "demSolid" { print $1 }'); do
     [ "$(readlink /proc/$p/cwd)" = "$CK" ] && kill -9 "$p"
