@@ -274,15 +274,7 @@ same_coupled() {
     echo "$d"
 }
 CB="$TMP/coupled_B"
-case_2d "$CB" "$ROOT/system/controlDict" <<'EOD'
-regions
-(
-    tank   { type tankWall; shape box; min (0 0 0); max (0.2 0.15 0); open (ymax); }
-    column { type fluid; shape box; min (0 0 0); max (0.05 0.1 0); hydrostaticPressure yes; }
-    beads  { type grains; shape box; min (0.0025 0.0005 0); max (0.0475 0.0205 0);
-             diameter 0.005; lattice cubic; spacing 0.0065; }
-);
-EOD
+case_dam_break_2d "$CB"
 "$ROOT/bin/dictTool" "$CB/system/controlDict" -set endTime=0.1 -set writeInterval=0.05 > /dev/null
 sed -i "s/^timeout .*/timeout 30;/" "$CB/system/couplingDict"
 (cd "$CB" && "$ROOT/bin/genParticles" > log.genParticles 2>&1) || fail mpi_coupled_2d "genParticles failed"

@@ -19,15 +19,7 @@ maxx() {   # largest grain centre x in a dem.vtu (ascii)
 }
 for model in A B; do
     c="$TMP/$model"
-    case_2d "$c" "$ROOT/system/controlDict" <<'EOD'
-regions
-(
-    tank   { type tankWall; shape box; min (0 0 0); max (0.2 0.15 0); open (ymax); }
-    column { type fluid; shape box; min (0 0 0); max (0.05 0.1 0); hydrostaticPressure yes; }
-    beads  { type grains; shape box; min (0.0025 0.0005 0); max (0.0475 0.0205 0);
-             diameter 0.005; lattice cubic; spacing 0.0065; }
-);
-EOD
+    case_dam_break_2d "$c"
     sed -i 's/^endTime .*/endTime 0.2;/; s/^writeFormat .*/writeFormat ascii;/' "$c/system/controlDict"
     sed -i "s/^model .*/model $model;/; s/^timeout .*/timeout 30;/" "$c/system/couplingDict"
     echo "channel mpsdem-db2d-$model-$$;" >> "$c/system/couplingDict"

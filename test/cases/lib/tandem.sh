@@ -47,6 +47,23 @@ case_2d()
       cat; } > "$c/system/particleDict"
 }
 
+# case_dam_break_2d DIR: case_2d with the quick 2-D two-phase dam break
+# (the root case's set-up in 2-D): a 0.2 x 0.15 m tank, a water column
+# 0.05 x 0.1 m with 21 loosely packed 5 mm beads at its bottom, the root
+# case's controlDict.
+case_dam_break_2d()
+{
+    case_2d "$1" "$ROOT/system/controlDict" <<'EOD'
+regions
+(
+    tank   { type tankWall; shape box; min (0 0 0); max (0.2 0.15 0); open (ymax); }
+    column { type fluid; shape box; min (0 0 0); max (0.05 0.1 0); hydrostaticPressure yes; }
+    beads  { type grains; shape box; min (0.0025 0.0005 0); max (0.0475 0.0205 0);
+             diameter 0.005; lattice cubic; spacing 0.0065; }
+);
+EOD
+}
+
 # case_beads_2d DIR: case_2d with the quick 2-D sedimentation set-up: a
 # 0.05 x 0.15 m tank, water to 0.1 m, 15 beads of 5 mm on a 1 cm lattice
 # above its floor (no controlDict: the test writes its own).

@@ -77,6 +77,22 @@ static int count_rows(const char *path)
 
 static const struct fo_ops *const *const tables[] = {fo_generic_table, NULL};
 
+/* The list of the `functions` dictionary in text, over make_scene's
+ * scene; *d holds the dictionary (the caller frees it). */
+static struct fo_list *make_list(const char *text, struct dict **d,
+                                 struct fo_scene *s, struct vtu_cloud *c,
+                                 struct vtu_field *f)
+{
+    const struct dict *fd;
+    struct fo_list *l;
+    assert_int_equal(dict_read_string(text, strlen(text), "controlDict", d),
+                     0);
+    assert_int_equal(dict_get_dict(*d, "functions", &fd), 0);
+    make_scene(s, c, f);
+    assert_int_equal(fo_list_create(fd, tables, s, tmpdir, 0.0, 6, &l), 0);
+    return l;
+}
+
 static void test_schedules(void **state)
 {
     (void)state;
@@ -90,15 +106,10 @@ static void test_schedules(void **state)
         "  off       { type cloudInfo; enabled no; }\n"
         "}\n";
     struct dict *d;
-    const struct dict *fd;
-    assert_int_equal(dict_read_string(text, strlen(text), "controlDict", &d), 0);
-    assert_int_equal(dict_get_dict(d, "functions", &fd), 0);
     struct fo_scene s;
     struct vtu_cloud c;
     struct vtu_field f;
-    make_scene(&s, &c, &f);
-    struct fo_list *l;
-    assert_int_equal(fo_list_create(fd, tables, &s, tmpdir, 0.0, 6, &l), 0);
+    struct fo_list *l = make_list(text, &d, &s, &c, &f);
     for (long step = 0; step <= 100; step++) {
         s.step = step;
         s.time = step * 0.01;
@@ -134,15 +145,10 @@ static void test_due(void **state)
         "  atWrite { type cloudInfo; writeControl writeTime; }\n"
         "}\n";
     struct dict *d;
-    const struct dict *fd;
-    assert_int_equal(dict_read_string(text, strlen(text), "controlDict", &d), 0);
-    assert_int_equal(dict_get_dict(d, "functions", &fd), 0);
     struct fo_scene s;
     struct vtu_cloud c;
     struct vtu_field f;
-    make_scene(&s, &c, &f);
-    struct fo_list *l;
-    assert_int_equal(fo_list_create(fd, tables, &s, tmpdir, 0.0, 6, &l), 0);
+    struct fo_list *l = make_list(text, &d, &s, &c, &f);
     assert_int_equal(fo_list_due(NULL, 0.0, 0, 0.01, 1), 0);
     int last_k = -1, n_due = 0;
     for (long step = 0; step <= 100; step++) {
