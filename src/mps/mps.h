@@ -121,6 +121,9 @@ struct mps_settings {
     int clip_negative;              /* p < 0 set to 0 after the PPE     */
     double beta, alpha, fs_n_max;   /* eqs. 14, 16 and A0-07 (0.97)     */
     int fs_pressure;                /* MPS_FS_P_*: 0 on the surface     */
+    int fs_simultaneous;            /* extrapolated surface values from
+                                       the last step's (freeSurface/sweep
+                                       simultaneous), not in index order */
     double beta_porous;             /* eq. 14 where eps < 1 (0.8)       */
     const struct mps_stabiliser_ops *collision; /* "none" by default    */
     double collision_ratio, collision_restitution;

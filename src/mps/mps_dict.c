@@ -130,6 +130,9 @@ static int read_free_surface(const struct dict *d, struct mps_settings *S)
                            TABLE(fs_pressure_table),
                            fs_pressure_table[S->fs_pressure]->name,
                            &S->fs_pressure));
+    static const char *const sweeps[] = { "sequential", "simultaneous",
+                                          NULL };
+    TRY(dict_get_word_or(fs, "sweep", sweeps, 0, &S->fs_simultaneous));
     TRY(dict_get_scalar_or(fs, "betaPorous", S->beta_porous,
                            &S->beta_porous));
     TRY(dict_range(fs, "betaPorous", S->beta_porous, 0, 1, 1));

@@ -59,17 +59,18 @@ static int number_unknowns(struct mps_solver *s)
 
 /* Pressure of the rows that drop out: 0 (dry walls; surface particles by
  * default) or the extrapolated surface value (surface_pressure.c). */
-static void dirichlet_values(struct mps_solver *s)
+static int dirichlet_values(struct mps_solver *s)
 {
     struct mps_particles *P = &s->P;
     if (s->S.fs_pressure == MPS_FS_P_EXTRAPOLATED)
-        mps_surface_pressure(s);
+        TRY(mps_surface_pressure(s));
 #pragma omp parallel for schedule(static)
     for (int i = 0; i < P->n; i++)
         if (P->type[i] != MPS_DUMMY && s->unk[i] < 0
             && !(P->type[i] == MPS_FLUID && P->fs[i] == MPS_SURFACE
                  && s->S.fs_pressure == MPS_FS_P_EXTRAPOLATED))
             P->p[i] = 0;
+    return SIM_OK;
 }
 
 static int assemble(struct mps_solver *s, int m)
@@ -195,7 +196,7 @@ int mps_ppe_solve(struct mps_solver *s, double dt)
     struct mps_particles *P = &s->P;
     double t0 = omp_get_wtime();
     int m = number_unknowns(s);
-    dirichlet_values(s);
+    TRY(dirichlet_values(s));
     TRY(assemble(s, m));
     source(s, dt);
     double t1 = omp_get_wtime();

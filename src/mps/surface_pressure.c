@@ -29,6 +29,7 @@
  */
 #include <math.h>
 
+#include "core/error.h"
 #include "mps/mps.h"
 #include "mps/mps_impl.h"
 #include "particles/operators/gradient_corrected.h"
@@ -83,7 +84,7 @@ static double surface_value(const struct mps_solver *s,
     return fmin(fmax(0.0, a / (1 + b)), pmax);
 }
 
-void mps_surface_pressure(struct mps_solver *s)
+int mps_surface_pressure(struct mps_solver *s)
 {
     struct mps_particles *P = &s->P;
     const struct pop_weights Wn = mps_w(s, MPS_W_N), Wg = mps_w(s, MPS_W_G);
@@ -94,7 +95,25 @@ void mps_surface_pressure(struct mps_solver *s)
      * Kleefsman tank, test/cases/neighbourDistances.sh under load); in
      * order, every thread count gives what one thread always gave. The
      * surface particles are a few per cent of the fluid. */
-    for (int i = 0; i < P->n; i++)
+    if (!s->S.fs_simultaneous) {
+        for (int i = 0; i < P->n; i++)
+            if (P->type[i] == MPS_FLUID && P->fs[i] == MPS_SURFACE)
+                P->p[i] = surface_value(s, &Wn, &Wg, i);
+        return SIM_OK;
+    }
+    /* `sweep simultaneous`: every value from the last step's, so the
+     * order does not matter and a distributed run, which fits its own
+     * particles and then gives the ghosts their owners' values, repeats
+     * one process to round-off. s->div is free until the PPE's source. */
+    const int n = mps_own(s);
+    double *v = s->div;
+#pragma omp parallel for schedule(static)
+    for (int i = 0; i < n; i++)
         if (P->type[i] == MPS_FLUID && P->fs[i] == MPS_SURFACE)
-            P->p[i] = surface_value(s, &Wn, &Wg, i);
+            v[i] = surface_value(s, &Wn, &Wg, i);
+#pragma omp parallel for schedule(static)
+    for (int i = 0; i < n; i++)
+        if (P->type[i] == MPS_FLUID && P->fs[i] == MPS_SURFACE)
+            P->p[i] = v[i];
+    return mps_halo_refresh(s, P->p, sizeof *P->p);
 }

@@ -9,7 +9,9 @@
 struct mps_solver;
 
 /* Set P->p of every fluid particle flagged MPS_SURFACE from the current
- * (previous-step) pressure field of their neighbours. */
-void mps_surface_pressure(struct mps_solver *s);
+ * (previous-step) pressure field of their neighbours: in index order, or
+ * with `sweep simultaneous` all from the last step's values (a
+ * distributed run's own particles, then refreshed at the ghosts). */
+int mps_surface_pressure(struct mps_solver *s);
 
 #endif

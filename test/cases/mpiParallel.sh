@@ -36,10 +36,13 @@
 #   mpi_same_shifting damBreak2D with the extrapolated dummy pressure and
 #                     shifting xu2009, then lind2012, on 2 ranks to 0.1 s:
 #                     within the bounds (measured 2.5e-9 m and 1.0e-9 m)
-#   mpi_refused       -parallel with the build without MPI, with the
-#                     extrapolated surface pressure (system/mpsSchemes, its
-#                     line), with soil (constant/soilProperties), with
-#                     maxImbalance 0.5
+#   mpi_same_surface  the same case with the extrapolated surface pressure
+#                     and `sweep simultaneous` on 1 and 2 ranks: within the
+#                     bounds (measured 8.1e-10 m); with the sequential
+#                     default the distributed run warns (system/mpsSchemes,
+#                     its line) and fits simultaneously
+#   mpi_refused       -parallel with the build without MPI, with soil
+#                     (constant/soilProperties), with maxImbalance 0.5
 #                     (system/decomposeParDict, its line): exit 1, the
 #                     message, no time directory
 # Coupled (mpsFluid on N ranks beside demSolid, runTandem -np N; the grains
@@ -136,6 +139,22 @@ for sh in xu2009 lind2012; do
 done
 [ -z "$msg" ] && pass mpi_same_shifting || fail mpi_same_shifting "$msg"
 
+# the extrapolated surface pressure: `sweep simultaneous` on 1 and 2 ranks
+# alike; the sequential default runs distributed as simultaneous, warned
+"$ROOT/bin/dictTool" "$SH/system/mpsSchemes" -new -set freeSurface/pressure=extrapolated > /dev/null
+rm -rf "$SH.1" "$SH.2" "$SH.w"; cp -r "$SH" "$SH.w"
+"$ROOT/bin/dictTool" "$SH/system/mpsSchemes" -new -set freeSurface/sweep=simultaneous > /dev/null
+cp -r "$SH" "$SH.1"; cp -r "$SH" "$SH.2"
+msg=""
+if (cd "$SH.1" && "$ROOT/bin/mpsFluid" > log.mpsFluid 2>&1) && par "$SH.2" 2; then
+    msg=$(differ "$SH.1/0.1/fluid.vtu" "$SH.2/0.1/fluid.pvtu" 1e-5 1)
+else
+    msg="a run failed: $(grep -h -A1 FATAL "$SH".[12]/log.* | tail -n 1)"
+fi
+par "$SH.w" 2 && grep -qE "system/mpsSchemes:[0-9]+:[0-9]+: freeSurface \{ pressure extrapolated; \} runs distributed with .sweep simultaneous" "$SH.w/log.par2" \
+    || msg+=" sequential default: no warning or failed: $(grep -A1 FATAL "$SH.w/log.par2" | tail -n 1)"
+[ -z "$msg" ] && pass mpi_same_surface || fail mpi_same_surface "$msg"
+
 st=$(grep "distributed " "$TMP/np4/log.par4")
 mig=$(echo "$st" | sed -n 's/.* \([0-9]*\) migrations.*/\1/p')
 gh=$(echo "$st" | sed -n 's/.*ghosts per rank \([0-9.]*\) (mean).*/\1/p')
@@ -227,14 +246,6 @@ out=$(cd "$c" && "$ROOT/bin/mpsFluid" -parallel 2>&1); rc=$?
 extra=$(cd "$c" && ls -d [0-9]* | grep -v '^0$')
 [ $rc -eq 1 ] && echo "$out" | grep -q "built without MPI.*make MPI=1" && [ -z "$extra" ] \
     && pass mpi_refused_serial_build || fail mpi_refused_serial_build "rc $rc: $(echo "$out" | grep -A1 FATAL | tail -n 1)"
-cp "$c/system/mpsSchemes" "$c/mpsSchemes.keep"
-"$ROOT/bin/dictTool" "$c/system/mpsSchemes" -new -set freeSurface/pressure=extrapolated > /dev/null
-out=$(par "$c" 2 2>&1; cat "$c/log.par2")
-extra=$(cd "$c" && ls -d [0-9]* | grep -v '^0$')
-echo "$out" | grep -qE "system/mpsSchemes:[0-9]+:[0-9]+: freeSurface \{ pressure extrapolated; \} does not run distributed" && [ -z "$extra" ] \
-    && ! grep -q "^End" "$c/log.par2" && pass mpi_refused_surface \
-    || fail mpi_refused_surface "$(echo "$out" | grep -A1 FATAL | tail -n 1) time dirs '$extra'"
-mv "$c/mpsSchemes.keep" "$c/system/mpsSchemes"
 SO="$TMP/soil"
 case_copy "$SO" mpsFluid/soilLayerStill 0.01 || fail mpi_refused_soil "case set-up failed"
 par "$SO" 2; out=$(cat "$SO/log.par2")
