@@ -112,6 +112,18 @@ int couple_fluid_init(struct couple_fluid *cf, const struct dict *coupling,
     return SIM_OK;
 }
 
+/* Room for ng grains; those added since the last state get the fields
+ * of a dry grain (nothing was sent for them). */
+static int room_for_grains(struct couple_fluid *cf, int ng)
+{
+    TRY(grow_grains(cf, ng));
+    for (int k = cf->ng; k < ng; k++) {
+        cf->eps_k[k] = 1.0;
+        cf->wet[k] = 0;
+    }
+    return SIM_OK;
+}
+
 /* Sphere volumes and the measures of eq. (31) from the radii. */
 static int grain_volumes(struct couple_fluid *cf, int ng)
 {
@@ -132,12 +144,7 @@ int couple_fluid_set_grains(struct couple_fluid *cf,
     if (st->n > 1000000000)
         return sim_error(SIM_ERR_PEER, "DEM state with %zu grains", st->n);
     int ng = (int)st->n, grew = ng != cf->ng;
-    TRY(grow_grains(cf, ng));
-    /* Grains added since the last state: nothing was sent for them. */
-    for (int k = cf->ng; k < ng; k++) {
-        cf->eps_k[k] = 1.0;
-        cf->wet[k] = 0;
-    }
+    TRY(room_for_grains(cf, ng));
     memcpy(cf->xg, st->position, 3 * (size_t)ng * sizeof *cf->xg);
     memcpy(cf->vg, st->velocity, 3 * (size_t)ng * sizeof *cf->vg);
     memcpy(cf->rg, st->radius, (size_t)ng * sizeof *cf->rg);
@@ -427,13 +434,8 @@ static int share_grains(struct couple_fluid *cf, const struct mps_solver *s)
     double head[2] = { cf->ng, cf->dem_time };
     h->ops->bcast(h, head, sizeof head);
     int ng = (int)head[0];
-    if (h->rank > 0) {
-        TRY(grow_grains(cf, ng));
-        for (int k = cf->ng; k < ng; k++) {
-            cf->eps_k[k] = 1.0;
-            cf->wet[k] = 0;
-        }
-    }
+    if (h->rank > 0)
+        TRY(room_for_grains(cf, ng));
     h->ops->bcast(h, cf->xg, 3 * (size_t)ng * sizeof *cf->xg);
     h->ops->bcast(h, cf->vg, 3 * (size_t)ng * sizeof *cf->vg);
     h->ops->bcast(h, cf->rg, (size_t)ng * sizeof *cf->rg);
